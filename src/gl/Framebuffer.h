@@ -1,0 +1,37 @@
+#pragma once
+// Framebuffer objects with several colour attachments and a depth attachment.
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "gl/Handle.h"
+
+namespace specula::gl {
+
+class Texture;
+
+namespace detail {
+void deleteFramebuffer(uint32_t id);
+}
+
+class Framebuffer {
+public:
+    Framebuffer() = default;
+    explicit Framebuffer(std::string_view label);
+
+    /// Attaches `level` of a texture (or one layer / cube face when layer >= 0) as colour `index`.
+    Framebuffer& attachColor(int index, const Texture& texture, int level = 0, int layer = -1);
+    Framebuffer& attachDepth(const Texture& texture, int level = 0);
+    /// Sets the draw buffers to the attached colours and throws specula::Error naming the
+    /// framebuffer and the reason when it is incomplete.
+    void check();
+
+    uint32_t id() const { return mHandle.get(); }
+
+private:
+    Handle<detail::deleteFramebuffer> mHandle;
+    std::string mLabel;
+    uint32_t mColorMask = 0;
+};
+
+} // namespace specula::gl

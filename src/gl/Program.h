@@ -1,0 +1,56 @@
+#pragma once
+// Shader programs built from files under the shader root, with #include and defines.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/fwd.hpp>
+
+#include "gl/Handle.h"
+
+namespace specula::gl {
+
+namespace detail {
+void deleteProgram(uint32_t id);
+}
+
+/// The directory holding the GLSL sources: $SPECULA_SHADER_DIR, else the source tree's shaders/.
+std::filesystem::path shaderRoot();
+
+struct ProgramDesc {
+    std::string vertex;   ///< paths relative to the shader root
+    std::string fragment;
+    std::string compute;
+    std::vector<std::string> defines;
+    std::string label;
+};
+
+class Program {
+public:
+    Program() = default;
+    /// Compiles and links; throws specula::Error whose message names file and line.
+    explicit Program(const ProgramDesc& desc);
+
+    uint32_t id() const { return mHandle.get(); }
+    explicit operator bool() const { return bool(mHandle); }
+    const ProgramDesc& desc() const { return mDesc; }
+
+    /// Looks a uniform up (do it once, at set-up); -1 when absent or optimised away.
+    int uniformLocation(const char* name) const;
+
+    void set(int location, int value) const;
+    void set(int location, uint32_t value) const;
+    void set(int location, float value) const;
+    void set(int location, const glm::vec2& value) const;
+    void set(int location, const glm::vec3& value) const;
+    void set(int location, const glm::vec4& value) const;
+    void set(int location, const glm::mat3& value) const;
+    void set(int location, const glm::mat4& value) const;
+
+private:
+    Handle<detail::deleteProgram> mHandle;
+    ProgramDesc mDesc;
+};
+
+} // namespace specula::gl

@@ -1,0 +1,137 @@
+#include "gl/State.h"
+
+#include <epoxy/gl.h>
+
+#include "gl/Buffer.h"
+#include "gl/Framebuffer.h"
+#include "gl/Program.h"
+#include "gl/Texture.h"
+#include "gl/VertexArray.h"
+
+namespace specula::gl {
+
+State::State()
+{
+    reset();
+}
+
+void State::reset()
+{
+    mProgram = mVertexArray = mFramebuffer = ~0u;
+    mTextures.fill(~0u);
+    mSamplers.fill(~0u);
+    mViewport = {-1, -1, -1, -1};
+    mPipelineKnown = false;
+    // Reversed or odd state from other code would silently change our results.
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+}
+
+void State::useProgram(const Program& program)
+{
+    if (mProgram != program.id()) {
+        mProgram = program.id();
+        glUseProgram(mProgram);
+    }
+}
+
+void State::bindVertexArray(const VertexArray& vertexArray)
+{
+    if (mVertexArray != vertexArray.id()) {
+        mVertexArray = vertexArray.id();
+        glBindVertexArray(mVertexArray);
+    }
+}
+
+void State::bindTexture(int unit, const Texture& texture)
+{
+    if (mTextures[size_t(unit)] != texture.id()) {
+        mTextures[size_t(unit)] = texture.id();
+        glBindTextureUnit(GLuint(unit), texture.id());
+    }
+}
+
+void State::bindSampler(int unit, const Sampler* sampler)
+{
+    const uint32_t id = sampler ? sampler->id() : 0;
+    if (mSamplers[size_t(unit)] != id) {
+        mSamplers[size_t(unit)] = id;
+        glBindSampler(GLuint(unit), id);
+    }
+}
+
+void State::bindFramebuffer(const Framebuffer* framebuffer)
+{
+    const uint32_t id = framebuffer ? framebuffer->id() : 0;
+    if (mFramebuffer != id) {
+        mFramebuffer = id;
+        glBindFramebuffer(GL_FRAMEBUFFER, id);
+    }
+}
+
+void State::viewport(int x, int y, int width, int height)
+{
+    const std::array<int, 4> v{x, y, width, height};
+    if (v != mViewport) {
+        mViewport = v;
+        glViewport(x, y, width, height);
+    }
+}
+
+void State::apply(const PipelineDesc& p)
+{
+    if (mPipelineKnown && p == mPipeline) return;
+    const bool first = !mPipelineKnown;
+    if (first || p.noDepthTest != mPipeline.noDepthTest) p.noDepthTest ? glDisable(GL_DEPTH_TEST) : glEnable(GL_DEPTH_TEST);
+    if (first || p.noDepthWrite != mPipeline.noDepthWrite) glDepthMask(p.noDepthWrite ? GL_FALSE : GL_TRUE);
+    if (first || p.depthCompare != mPipeline.depthCompare) {
+        const GLenum func = p.depthCompare == CompareOp::Less        ? GL_LESS
+                          : p.depthCompare == CompareOp::LessEqual   ? GL_LEQUAL
+                          : p.depthCompare == CompareOp::Equal       ? GL_EQUAL
+                                                                     : GL_ALWAYS;
+        glDepthFunc(func);
+    }
+    if (first || p.cull != mPipeline.cull) {
+        if (p.cull == CullMode::None) {
+            glDisable(GL_CULL_FACE);
+        } else {
+            glEnable(GL_CULL_FACE);
+            glCullFace(p.cull == CullMode::Back ? GL_BACK : GL_FRONT);
+        }
+    }
+    if (first || p.blend != mPipeline.blend) {
+        switch (p.blend) {
+        case BlendMode::None: glDisable(GL_BLEND); break;
+        case BlendMode::Alpha:
+            glEnable(GL_BLEND);
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            break;
+        case BlendMode::PremultipliedAlpha:
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+            break;
+        case BlendMode::Additive:
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_ONE, GL_ONE);
+            break;
+        }
+    }
+    mPipeline = p;
+    mPipelineKnown = true;
+}
+
+void bindUniformBuffer(uint32_t binding, const Buffer& buffer)
+{
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding, buffer.id());
+}
+
+void bindStorageBuffer(uint32_t binding, const Buffer& buffer)
+{
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer.id());
+}
+
+} // namespace specula::gl

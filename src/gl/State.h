@@ -1,0 +1,67 @@
+#pragma once
+// The one place that binds objects and sets fixed-function state for drawing. It remembers
+// what is bound and skips redundant calls. Call reset() after third-party GL code.
+#include <array>
+#include <cstdint>
+
+namespace specula::gl {
+
+class Buffer;
+class Framebuffer;
+class Program;
+class Sampler;
+class Texture;
+class VertexArray;
+
+enum class CompareOp : uint8_t { Less, LessEqual, Equal, Always };
+enum class CullMode : uint8_t { None, Back, Front };
+enum class BlendMode : uint8_t { None, Alpha, PremultipliedAlpha, Additive };
+
+/// Fixed-function state of a pass. Zero values are the defaults.
+struct PipelineDesc {
+    bool noDepthTest = false;
+    bool noDepthWrite = false;
+    CompareOp depthCompare = CompareOp::Less;
+    CullMode cull = CullMode::None;
+    BlendMode blend = BlendMode::None;
+    bool operator==(const PipelineDesc&) const = default;
+};
+
+class State {
+public:
+    State();
+
+    void useProgram(const Program& program);
+    void bindVertexArray(const VertexArray& vertexArray);
+    void bindTexture(int unit, const Texture& texture);
+    void bindSampler(int unit, const Sampler* sampler);
+    /// nullptr binds the default framebuffer.
+    void bindFramebuffer(const Framebuffer* framebuffer);
+    void viewport(int x, int y, int width, int height);
+    void apply(const PipelineDesc& pipeline);
+
+    /// Forgets the cache and restores GL defaults this class relies on.
+    void reset();
+
+    /// Draw calls issued through this state since the last resetCounters().
+    int drawCalls() const { return mDrawCalls; }
+    void countDraw() { ++mDrawCalls; }
+    void resetCounters() { mDrawCalls = 0; }
+
+private:
+    static constexpr int kUnits = 16;
+    uint32_t mProgram = ~0u;
+    uint32_t mVertexArray = ~0u;
+    uint32_t mFramebuffer = ~0u;
+    std::array<uint32_t, kUnits> mTextures{};
+    std::array<uint32_t, kUnits> mSamplers{};
+    std::array<int, 4> mViewport{-1, -1, -1, -1};
+    PipelineDesc mPipeline;
+    bool mPipelineKnown = false;
+    int mDrawCalls = 0;
+};
+
+void bindUniformBuffer(uint32_t binding, const Buffer& buffer);
+void bindStorageBuffer(uint32_t binding, const Buffer& buffer);
+
+} // namespace specula::gl

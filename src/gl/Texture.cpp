@@ -1,0 +1,209 @@
+#include "gl/Texture.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "core/Error.h"
+#include "gl/Debug.h"
+
+namespace specula::gl {
+namespace {
+
+GLenum glInternalFormat(Format format)
+{
+    switch (format) {
+    case Format::R8: return GL_R8;
+    case Format::RG8: return GL_RG8;
+    case Format::RGBA8: return GL_RGBA8;
+    case Format::SRGB8_ALPHA8: return GL_SRGB8_ALPHA8;
+    case Format::R16F: return GL_R16F;
+    case Format::RG16F: return GL_RG16F;
+    case Format::RGBA16F: return GL_RGBA16F;
+    case Format::R32F: return GL_R32F;
+    case Format::RG32F: return GL_RG32F;
+    case Format::RGBA32F: return GL_RGBA32F;
+    case Format::Depth24: return GL_DEPTH_COMPONENT24;
+    case Format::Depth32F: return GL_DEPTH_COMPONENT32F;
+    case Format::Depth24Stencil8: return GL_DEPTH24_STENCIL8;
+    }
+    return GL_RGBA8;
+}
+
+GLenum glTarget(TextureType type)
+{
+    switch (type) {
+    case TextureType::Texture2D: return GL_TEXTURE_2D;
+    case TextureType::Texture2DArray: return GL_TEXTURE_2D_ARRAY;
+    case TextureType::Cube: return GL_TEXTURE_CUBE_MAP;
+    case TextureType::Texture2DMultisample: return GL_TEXTURE_2D_MULTISAMPLE;
+    }
+    return GL_TEXTURE_2D;
+}
+
+GLenum channelFormat(int channels)
+{
+    switch (channels) {
+    case 1: return GL_RED;
+    case 2: return GL_RG;
+    case 3: return GL_RGB;
+    default: return GL_RGBA;
+    }
+}
+
+GLenum glPixelType(PixelType type)
+{
+    switch (type) {
+    case PixelType::UnsignedByte: return GL_UNSIGNED_BYTE;
+    case PixelType::HalfFloat: return GL_HALF_FLOAT;
+    case PixelType::Float: return GL_FLOAT;
+    }
+    return GL_UNSIGNED_BYTE;
+}
+
+GLenum glFilter(Filter filter, MipFilter mip)
+{
+    if (filter == Filter::Nearest) {
+        return mip == MipFilter::None      ? GL_NEAREST
+             : mip == MipFilter::Nearest   ? GL_NEAREST_MIPMAP_NEAREST
+                                           : GL_NEAREST_MIPMAP_LINEAR;
+    }
+    return mip == MipFilter::None      ? GL_LINEAR
+         : mip == MipFilter::Nearest   ? GL_LINEAR_MIPMAP_NEAREST
+                                       : GL_LINEAR_MIPMAP_LINEAR;
+}
+
+GLenum glWrap(Wrap wrap)
+{
+    switch (wrap) {
+    case Wrap::Repeat: return GL_REPEAT;
+    case Wrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+    case Wrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
+    }
+    return GL_REPEAT;
+}
+
+} // namespace
+
+void detail::deleteTexture(uint32_t id)
+{
+    glDeleteTextures(1, &id);
+}
+
+void detail::deleteSampler(uint32_t id)
+{
+    glDeleteSamplers(1, &id);
+}
+
+int Texture::fullMipChain(int width, int height)
+{
+    return 1 + int(std::floor(std::log2(double(std::max({width, height, 1})))));
+}
+
+Texture::Texture(const TextureDesc& desc) : mDesc(desc)
+{
+    if (desc.width <= 0 || desc.height <= 0) throw Error("texture '{}' has an empty size {}x{}", desc.label, desc.width, desc.height);
+    if (mDesc.levels <= 0) mDesc.levels = fullMipChain(desc.width, desc.height);
+    GLuint id = 0;
+    glCreateTextures(glTarget(desc.type), 1, &id);
+    mHandle = Handle<detail::deleteTexture>(id);
+    const GLenum format = glInternalFormat(desc.format);
+    switch (desc.type) {
+    case TextureType::Texture2D:
+    case TextureType::Cube:
+        glTextureStorage2D(id, mDesc.levels, format, desc.width, desc.height);
+        break;
+    case TextureType::Texture2DArray:
+        glTextureStorage3D(id, mDesc.levels, format, desc.width, desc.height, desc.layers);
+        break;
+    case TextureType::Texture2DMultisample:
+        mDesc.levels = 1;
+        glTextureStorage2DMultisample(id, desc.samples, format, desc.width, desc.height, GL_TRUE);
+        break;
+    }
+    if (desc.type != TextureType::Texture2DMultisample) {
+        glTextureParameteri(id, GL_TEXTURE_MAX_LEVEL, mDesc.levels - 1);
+        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, mDesc.levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(id, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    }
+    label(GL_TEXTURE, id, desc.label);
+}
+
+int Texture::width(int level) const
+{
+    return std::max(1, mDesc.width >> level);
+}
+
+int Texture::height(int level) const
+{
+    return std::max(1, mDesc.height >> level);
+}
+
+bool Texture::isDepth() const
+{
+    return mDesc.format == Format::Depth24 || mDesc.format == Format::Depth32F || mDesc.format == Format::Depth24Stencil8;
+}
+
+void Texture::upload(int level, int layer, int channels, PixelType type, const void* pixels)
+{
+    assert(level < mDesc.levels);
+    const GLuint id = mHandle.get();
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (mDesc.type == TextureType::Texture2D) {
+        glTextureSubImage2D(id, level, 0, 0, width(level), height(level), channelFormat(channels), glPixelType(type), pixels);
+    } else {
+        // Cube faces are addressed as layers 0..5 with DSA.
+        glTextureSubImage3D(id, level, 0, 0, layer, width(level), height(level), 1, channelFormat(channels),
+                            glPixelType(type), pixels);
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+}
+
+void Texture::generateMipmaps()
+{
+    if (mDesc.levels > 1) glGenerateTextureMipmap(mHandle.get());
+}
+
+std::vector<float> Texture::readFloat(int level, int channels) const
+{
+    std::vector<float> pixels(size_t(width(level)) * height(level) * channels * (mDesc.type == TextureType::Cube ? 6 : 1));
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    if (isDepth()) {
+        glGetTextureImage(mHandle.get(), level, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
+    } else {
+        glGetTextureImage(mHandle.get(), level, channelFormat(channels), GL_FLOAT, GLsizei(pixels.size() * sizeof(float)),
+                          pixels.data());
+    }
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    return pixels;
+}
+
+std::vector<uint8_t> Texture::readBytes(int level, int channels) const
+{
+    std::vector<uint8_t> pixels(size_t(width(level)) * height(level) * channels * (mDesc.type == TextureType::Cube ? 6 : 1));
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(mHandle.get(), level, channelFormat(channels), GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    return pixels;
+}
+
+Sampler::Sampler(const SamplerDesc& desc, std::string_view name) : mDesc(desc)
+{
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    mHandle = Handle<detail::deleteSampler>(id);
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, glFilter(desc.minFilter, desc.mipFilter));
+    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, glFilter(desc.magFilter, MipFilter::None));
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, glWrap(desc.wrapS));
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, glWrap(desc.wrapT));
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_R, glWrap(desc.wrapR));
+    if (desc.maxAnisotropy > 1.0f) glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY, desc.maxAnisotropy);
+    label(GL_SAMPLER, id, name);
+}
+
+} // namespace specula::gl

@@ -1,0 +1,98 @@
+#pragma once
+// Texture objects with immutable storage (glTextureStorage*), internal format chosen by the caller.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gl/Handle.h"
+
+namespace specula::gl {
+
+namespace detail {
+void deleteTexture(uint32_t id);
+}
+
+enum class TextureType { Texture2D, Texture2DArray, Cube, Texture2DMultisample };
+
+enum class Format {
+    R8, RG8, RGBA8, SRGB8_ALPHA8,
+    R16F, RG16F, RGBA16F,
+    R32F, RG32F, RGBA32F,
+    Depth24, Depth32F, Depth24Stencil8,
+};
+
+/// Type of the client-side pixels passed to upload() or wanted from read().
+enum class PixelType { UnsignedByte, HalfFloat, Float };
+
+struct TextureDesc {
+    TextureType type = TextureType::Texture2D;
+    Format format = Format::RGBA8;
+    int width = 1;
+    int height = 1;
+    int layers = 1;  ///< array layers (Texture2DArray)
+    int levels = 1;  ///< mip levels; 0 = full chain down to 1x1
+    int samples = 1; ///< Texture2DMultisample only
+    std::string label;
+};
+
+class Texture {
+public:
+    Texture() = default;
+    explicit Texture(const TextureDesc& desc);
+
+    /// Uploads a whole level of one layer (or cube face, 0..5 = +X,-X,+Y,-Y,+Z,-Z).
+    /// `channels` is 1..4; rows are tightly packed, first row at the bottom (GL convention).
+    void upload(int level, int layer, int channels, PixelType type, const void* pixels);
+    void generateMipmaps();
+    /// Reads a whole level of layer 0 back (stalls); size = levelWidth*levelHeight*channels.
+    std::vector<float> readFloat(int level = 0, int channels = 4) const;
+    std::vector<uint8_t> readBytes(int level = 0, int channels = 4) const;
+
+    uint32_t id() const { return mHandle.get(); }
+    explicit operator bool() const { return bool(mHandle); }
+    const TextureDesc& desc() const { return mDesc; }
+    int width(int level = 0) const;
+    int height(int level = 0) const;
+    int levels() const { return mDesc.levels; }
+    bool isDepth() const;
+
+    static int fullMipChain(int width, int height);
+
+private:
+    Handle<detail::deleteTexture> mHandle;
+    TextureDesc mDesc;
+};
+
+enum class Filter { Nearest, Linear };
+enum class MipFilter { None, Nearest, Linear };
+enum class Wrap { Repeat, MirroredRepeat, ClampToEdge };
+
+struct SamplerDesc {
+    Filter minFilter = Filter::Linear;
+    Filter magFilter = Filter::Linear;
+    MipFilter mipFilter = MipFilter::Linear;
+    Wrap wrapS = Wrap::Repeat;
+    Wrap wrapT = Wrap::Repeat;
+    Wrap wrapR = Wrap::Repeat;
+    float maxAnisotropy = 1.0f;
+    bool operator==(const SamplerDesc&) const = default;
+};
+
+namespace detail {
+void deleteSampler(uint32_t id);
+}
+
+class Sampler {
+public:
+    Sampler() = default;
+    explicit Sampler(const SamplerDesc& desc, std::string_view label = {});
+    uint32_t id() const { return mHandle.get(); }
+    const SamplerDesc& desc() const { return mDesc; }
+
+private:
+    Handle<detail::deleteSampler> mHandle;
+    SamplerDesc mDesc;
+};
+
+} // namespace specula::gl

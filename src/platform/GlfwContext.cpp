@@ -1,0 +1,61 @@
+// Windowed OpenGL through GLFW.
+#include <epoxy/gl.h>
+#include <GLFW/glfw3.h>
+
+#include "core/Error.h"
+#include "platform/Context.h"
+
+namespace specula::platform {
+namespace {
+
+class GlfwContext final : public Context {
+public:
+    explicit GlfwContext(const ContextDesc& desc)
+    {
+        glfwSetErrorCallback([](int, const char*) {});
+        if (!glfwInit()) throw Error("cannot open a window: GLFW could not initialise (is there a display?)");
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, desc.debug ? GLFW_TRUE : GLFW_FALSE);
+        glfwWindowHint(GLFW_VISIBLE, desc.visible ? GLFW_TRUE : GLFW_FALSE);
+        glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_FALSE);
+        mWindow = glfwCreateWindow(desc.width, desc.height, desc.title.c_str(), nullptr, nullptr);
+        if (!mWindow) {
+            glfwTerminate();
+            throw Error("cannot open a window with an OpenGL 4.5 core context");
+        }
+        glfwMakeContextCurrent(mWindow);
+        glfwSwapInterval(0);
+        mBackend = "GLFW";
+    }
+    ~GlfwContext() override
+    {
+        glfwDestroyWindow(mWindow);
+        glfwTerminate();
+    }
+    void makeCurrent() override { glfwMakeContextCurrent(mWindow); }
+    void swapBuffers() override { glfwSwapBuffers(mWindow); }
+    void pollEvents() override { glfwPollEvents(); }
+    bool shouldClose() const override { return glfwWindowShouldClose(mWindow); }
+    glm::ivec2 framebufferSize() const override
+    {
+        int w = 0, h = 0;
+        glfwGetFramebufferSize(mWindow, &w, &h);
+        return {w, h};
+    }
+    void* nativeWindow() const override { return mWindow; }
+
+private:
+    GLFWwindow* mWindow = nullptr;
+};
+
+} // namespace
+
+std::unique_ptr<Context> Context::createWindow(const ContextDesc& desc)
+{
+    return std::make_unique<GlfwContext>(desc);
+}
+
+} // namespace specula::platform

@@ -1,0 +1,197 @@
+#pragma once
+// A scene as plain data: what a glTF file or a scene file describes, with no GL in sight.
+// Units: lengths in metres; point and spot intensities in candela, directional in lux;
+// emissive in cd/m² (factor × strength); rendered values are radiance in cd/m².
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace specula::scene {
+
+/// 8-bit image, tightly packed, first row at the top (as files store it).
+struct Image {
+    std::string name;
+    int width = 0;
+    int height = 0;
+    int channels = 4; ///< always 4 after import (RGBA)
+    std::vector<uint8_t> pixels;
+};
+
+enum class Filter { Nearest, Linear };
+enum class Wrap { Repeat, MirroredRepeat, ClampToEdge };
+
+struct Sampler {
+    Filter magFilter = Filter::Linear;
+    Filter minFilter = Filter::Linear;
+    bool mipmaps = true;           ///< min filter uses mipmaps
+    bool mipLinear = true;         ///< ..._MIPMAP_LINEAR rather than _NEAREST
+    Wrap wrapS = Wrap::Repeat;
+    Wrap wrapT = Wrap::Repeat;
+};
+
+/// KHR_texture_transform: uv' = T * R * S * uv.
+struct UvTransform {
+    glm::vec2 offset{0.0f};
+    float rotation = 0.0f; ///< radians, counter-clockwise in uv space
+    glm::vec2 scale{1.0f};
+    bool isIdentity() const { return offset == glm::vec2(0.0f) && rotation == 0.0f && scale == glm::vec2(1.0f); }
+    /// The 3x3 matrix of the glTF extension.
+    glm::mat3 matrix() const;
+};
+
+struct TextureRef {
+    int image = -1;   ///< index into Scene::images; -1 = none
+    int sampler = -1; ///< index into Scene::samplers; -1 = default sampler
+    int texCoord = 0; ///< 0 or 1
+    UvTransform transform;
+    bool valid() const { return image >= 0; }
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+struct Material {
+    std::string name;
+    glm::vec4 baseColorFactor{1.0f};
+    float metallicFactor = 1.0f;
+    float roughnessFactor = 1.0f; ///< perceptual roughness; α = roughness²
+    glm::vec3 emissiveFactor{0.0f};
+    float emissiveStrength = 1.0f; ///< KHR_materials_emissive_strength
+    float normalScale = 1.0f;
+    float occlusionStrength = 1.0f;
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    bool doubleSided = false;
+    TextureRef baseColorTexture;         ///< sRGB
+    TextureRef metallicRoughnessTexture; ///< G = roughness, B = metallic
+    TextureRef normalTexture;
+    TextureRef occlusionTexture;         ///< R
+    TextureRef emissiveTexture;          ///< sRGB
+};
+
+struct Vertex {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};
+    glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f}; ///< xyz tangent, w = bitangent sign
+    glm::vec2 uv0{0.0f};
+    glm::vec2 uv1{0.0f};
+    glm::vec4 color{1.0f};
+};
+
+struct Bounds {
+    glm::vec3 min{1e30f};
+    glm::vec3 max{-1e30f};
+    bool empty() const { return min.x > max.x; }
+    void extend(const glm::vec3& p)
+    {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void extend(const Bounds& b)
+    {
+        if (!b.empty()) {
+            extend(b.min);
+            extend(b.max);
+        }
+    }
+    Bounds transformed(const glm::mat4& m) const;
+    glm::vec3 center() const { return 0.5f * (min + max); }
+    float radius() const { return empty() ? 0.0f : 0.5f * glm::length(max - min); }
+};
+
+/// One draw: triangles with one material.
+struct Primitive {
+    std::vector<Vertex> vertices;
+    std::vector<uint32_t> indices; ///< empty = non-indexed (vertices are a triangle list)
+    int material = -1;             ///< -1 = the default material
+    bool hasTangents = false;      ///< tangents came from the file or were generated
+    bool hasColors = false;
+    Bounds bounds;
+};
+
+struct Mesh {
+    std::string name;
+    std::vector<Primitive> primitives;
+};
+
+struct Camera {
+    enum class Type { Perspective, Orthographic };
+    std::string name;
+    Type type = Type::Perspective;
+    float yfov = glm::radians(45.0f); ///< radians
+    float aspectRatio = 0.0f;         ///< 0 = from the viewport
+    float znear = 0.1f;
+    float zfar = 1000.0f;             ///< 0 = infinite (glTF)
+    float xmag = 1.0f, ymag = 1.0f;   ///< orthographic half extents
+};
+
+struct Light {
+    enum class Type : uint32_t { Directional = 0, Point = 1, Spot = 2 };
+    std::string name;
+    Type type = Type::Point;
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;      ///< cd (point, spot) or lux (directional)
+    float range = 0.0f;          ///< 0 = infinite
+    float innerConeAngle = 0.0f; ///< radians
+    float outerConeAngle = glm::radians(45.0f);
+};
+
+struct Node {
+    std::string name;
+    glm::vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+    glm::vec3 scale{1.0f};
+    std::optional<glm::mat4> matrix; ///< when the file gives a matrix instead of TRS
+    int mesh = -1;
+    int camera = -1;
+    int light = -1;
+    std::vector<int> children;
+    glm::mat4 localMatrix() const;
+};
+
+/// World-space results of walking the node tree.
+struct MeshInstance {
+    int mesh = -1;
+    int node = -1;
+    glm::mat4 world{1.0f};
+};
+struct CameraInstance {
+    int camera = -1;
+    int node = -1;
+    glm::mat4 world{1.0f}; ///< camera looks down its local -Z, +Y up
+};
+struct LightInstance {
+    int light = -1;
+    int node = -1;
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f}; ///< where the light points (local -Z)
+};
+
+struct Scene {
+    std::string name;
+    std::vector<Image> images;
+    std::vector<Sampler> samplers;
+    std::vector<Material> materials;
+    std::vector<Mesh> meshes;
+    std::vector<Camera> cameras;
+    std::vector<Light> lights;
+    std::vector<Node> nodes;
+    std::vector<int> roots;
+    /// Warnings met while loading (missing textures...), already logged.
+    std::vector<std::string> warnings;
+
+    int addNode(Node node, int parent = -1);
+    /// Appends `other` (its indices shifted) under a new root node with `transform`.
+    void append(Scene other, const glm::mat4& transform = glm::mat4(1.0f));
+
+    std::vector<MeshInstance> meshInstances() const;
+    std::vector<CameraInstance> cameraInstances() const;
+    std::vector<LightInstance> lightInstances() const;
+    Bounds worldBounds() const;
+    size_t triangleCount() const;
+};
+
+} // namespace specula::scene
