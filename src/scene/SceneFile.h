@@ -1,0 +1,45 @@
+#pragma once
+// Loading scenes: glTF 2.0 (.gltf, .glb) and Specula's JSON scene files (.json).
+// The JSON schema is documented in docs/scene-format.md.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "scene/Scene.h"
+
+namespace specula::scene {
+
+/// Render settings a scene file may give; the command line overrides each one it sets.
+struct RenderSettings {
+    std::optional<int> width;
+    std::optional<int> height;
+    std::optional<int> msaa;
+    std::optional<float> exposure;       ///< EV; the image is multiplied by 2^exposure
+    std::optional<std::string> tonemap;  ///< none, reinhard, reinhard-ext, aces, neutral
+    std::optional<std::string> brdfG;    ///< smith-ggx (default) or schlick-ggx
+    std::optional<bool> defaultLights;   ///< false = never add the default light rig
+};
+
+/// The environment a scene file asks for. Until image-based lighting exists only `color`
+/// (the background radiance, cd/m²) is used.
+struct EnvironmentSettings {
+    std::optional<glm::vec3> color;
+    std::string file;       ///< path resolved against the scene file's directory
+    float intensity = 1.0f;
+    float rotationDegrees = 0.0f;
+};
+
+struct SceneDocument {
+    Scene scene;
+    RenderSettings render;
+    EnvironmentSettings environment;
+    std::filesystem::path source;
+};
+
+/// Loads a .gltf/.glb (via loadGltf) or a .json scene file, by extension.
+/// Throws specula::Error with a one-line message naming the file.
+SceneDocument loadScene(const std::filesystem::path& path);
+/// Loads a JSON scene file.
+SceneDocument loadSceneFile(const std::filesystem::path& path);
+
+} // namespace specula::scene

@@ -1,0 +1,16 @@
+#pragma once
+#include "scene/Scene.h"
+
+namespace specula::scene {
+
+/// Replaces normals by face normals (vertices are un-shared so each face is flat).
+void generateFlatNormals(Primitive& primitive);
+
+/// Generates per-vertex tangents the MikkTSpace way: per-triangle tangent and bitangent
+/// from uv derivatives, weighted by the corner angle, orthogonalised against the vertex
+/// normal (Gram-Schmidt), with handedness w = sign(dot(cross(n, t), b)) so that
+/// bitangent = cross(normal, tangent.xyz) * w as glTF defines it. Vertices whose uv
+/// mapping is mirrored relative to their neighbours are split. Sets hasTangents.
+void generateTangents(Primitive& primitive, int uvSet = 0);
+
+} // namespace specula::scene
