@@ -82,4 +82,20 @@ void Framebuffer::check()
     }
 }
 
+void Framebuffer::clearColor(int index, float r, float g, float b, float a)
+{
+    const float value[4] = {r, g, b, a};
+    glClearNamedFramebufferfv(id(), GL_COLOR, index, value);
+}
+
+void Framebuffer::clearDepth(float depth)
+{
+    glClearNamedFramebufferfv(id(), GL_DEPTH, 0, &depth);
+}
+
+void Framebuffer::blitColorTo(const Framebuffer& target, int width, int height) const
+{
+    glBlitNamedFramebuffer(id(), target.id(), 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
 } // namespace specula::gl

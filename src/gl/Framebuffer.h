@@ -26,6 +26,11 @@ public:
     /// framebuffer and the reason when it is incomplete.
     void check();
 
+    void clearColor(int index, float r, float g, float b, float a);
+    void clearDepth(float depth = 1.0f);
+    /// Copies colour attachment 0 into `target`'s (resolving multisampling), nearest filter.
+    void blitColorTo(const Framebuffer& target, int width, int height) const;
+
     uint32_t id() const { return mHandle.get(); }
 
 private:

@@ -24,9 +24,10 @@ std::string shaderLog(GLuint shader)
     return log;
 }
 
-GLuint compile(GLenum stage, const std::string& path, const std::vector<std::string>& defines)
+GLuint compile(GLenum stage, const std::filesystem::path& root, const std::string& path,
+               const std::vector<std::string>& defines)
 {
-    const ShaderSource source = loadShaderSource(shaderRoot(), path, defines);
+    const ShaderSource source = loadShaderSource(root, path, defines);
     const GLuint shader = glCreateShader(stage);
     const char* text = source.text.c_str();
     glShaderSource(shader, 1, &text, nullptr);
@@ -59,15 +60,16 @@ std::filesystem::path shaderRoot()
 Program::Program(const ProgramDesc& desc) : mDesc(desc)
 {
     std::vector<GLuint> shaders;
+    const std::filesystem::path root = desc.root.empty() ? shaderRoot() : desc.root;
     auto cleanup = [&] {
         for (GLuint shader : shaders) glDeleteShader(shader);
     };
     try {
         if (!desc.compute.empty()) {
-            shaders.push_back(compile(GL_COMPUTE_SHADER, desc.compute, desc.defines));
+            shaders.push_back(compile(GL_COMPUTE_SHADER, root, desc.compute, desc.defines));
         } else {
-            shaders.push_back(compile(GL_VERTEX_SHADER, desc.vertex, desc.defines));
-            shaders.push_back(compile(GL_FRAGMENT_SHADER, desc.fragment, desc.defines));
+            shaders.push_back(compile(GL_VERTEX_SHADER, root, desc.vertex, desc.defines));
+            shaders.push_back(compile(GL_FRAGMENT_SHADER, root, desc.fragment, desc.defines));
         }
     } catch (...) {
         cleanup();

@@ -24,6 +24,7 @@ struct ProgramDesc {
     std::string compute;
     std::vector<std::string> defines;
     std::string label;
+    std::filesystem::path root; ///< empty = shaderRoot()
 };
 
 class Program {

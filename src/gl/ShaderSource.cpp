@@ -10,6 +10,16 @@ namespace specula::gl {
 namespace fs = std::filesystem;
 namespace {
 
+// Line numbers carry the file too: "#line (file * kLineStride + line) file". Mesa reports
+// the source-string number inconsistently (some errors say 0 whatever the #line said), the
+// line number it always keeps.
+constexpr long kLineStride = 100000;
+
+std::string lineDirective(int line, int file)
+{
+    return fmt::format("#line {} {}\n", long(file) * kLineStride + line, file);
+}
+
 struct Loader {
     fs::path root;
     std::vector<std::string> files;  // relative paths, index = source-string number
@@ -63,7 +73,7 @@ struct Loader {
         int lineNumber = 0;
         static const std::regex includeRe(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
         static const std::regex versionRe(R"(^\s*#\s*version\b.*)");
-        out += fmt::format("#line 1 {}\n", index);
+        out += lineDirective(1, index);
         while (std::getline(lines, line)) {
             ++lineNumber;
             if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -75,7 +85,7 @@ struct Loader {
                 // #version must come first: drop the #line we emitted before it.
                 out.clear();
                 out += line + "\n" + defines;
-                out += fmt::format("#line {} {}\n", lineNumber + 1, index);
+                out += lineDirective(lineNumber + 1, index);
                 continue;
             }
             if (std::regex_match(line, match, includeRe)) {
@@ -85,7 +95,7 @@ struct Loader {
                 std::string resolved = local.lexically_normal().generic_string();
                 if (!fs::is_regular_file(root / resolved, ec)) resolved = fs::path(name).lexically_normal().generic_string();
                 load(resolved, relative, lineNumber);
-                out += fmt::format("#line {} {}\n", lineNumber + 1, index);
+                out += lineDirective(lineNumber + 1, index);
                 continue;
             }
             out += line;
@@ -120,9 +130,14 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
         std::smatch match;
         std::string mapped = line;
         if (std::regex_match(line, match, mesaRe) || std::regex_match(line, match, nvidiaRe)) {
-            const size_t index = std::stoul(match[1].str());
-            const std::string name = index < files.size() ? "shaders/" + files[index] : "shader " + match[1].str();
-            mapped = fmt::format("{}:{}: {}", name, match[2].str(), match[match.size() - 1].str());
+            size_t index = std::stoul(match[1].str());
+            long lineNumber = std::stol(match[2].str());
+            if (lineNumber >= kLineStride) {
+                index = size_t(lineNumber / kLineStride);
+                lineNumber %= kLineStride;
+            }
+            const std::string name = index < files.size() ? "shaders/" + files[index] : "shader " + std::to_string(index);
+            mapped = fmt::format("{}:{}: {}", name, lineNumber, match[match.size() - 1].str());
         }
         if (!mapped.empty()) out += mapped + "\n";
     }

@@ -31,6 +31,16 @@ void State::reset()
     glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
 }
 
+void State::drawTriangles(uint32_t count, bool indexed)
+{
+    if (indexed) {
+        glDrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT, nullptr);
+    } else {
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(count));
+    }
+    ++mDrawCalls;
+}
+
 void State::useProgram(const Program& program)
 {
     if (mProgram != program.id()) {
@@ -120,6 +130,7 @@ void State::apply(const PipelineDesc& p)
             break;
         }
     }
+    if (first || p.frontFaceClockwise != mPipeline.frontFaceClockwise) glFrontFace(p.frontFaceClockwise ? GL_CW : GL_CCW);
     mPipeline = p;
     mPipelineKnown = true;
 }

@@ -24,6 +24,7 @@ struct PipelineDesc {
     CompareOp depthCompare = CompareOp::Less;
     CullMode cull = CullMode::None;
     BlendMode blend = BlendMode::None;
+    bool frontFaceClockwise = false; ///< for mirrored (negative determinant) transforms
     bool operator==(const PipelineDesc&) const = default;
 };
 
@@ -43,9 +44,11 @@ public:
     /// Forgets the cache and restores GL defaults this class relies on.
     void reset();
 
+    /// Draws `count` vertices (or 32-bit indices) of the bound vertex array as triangles.
+    void drawTriangles(uint32_t count, bool indexed);
+
     /// Draw calls issued through this state since the last resetCounters().
     int drawCalls() const { return mDrawCalls; }
-    void countDraw() { ++mDrawCalls; }
     void resetCounters() { mDrawCalls = 0; }
 
 private:

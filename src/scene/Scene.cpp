@@ -104,7 +104,8 @@ void walk(const Scene& scene, Visit&& visit)
         glm::mat4 parent;
     };
     std::vector<Item> stack;
-    for (int r : scene.roots) stack.push_back({r, glm::mat4(1.0f)});
+    // Depth first, in file order: push in reverse so the first root is visited first.
+    for (auto it = scene.roots.rbegin(); it != scene.roots.rend(); ++it) stack.push_back({*it, glm::mat4(1.0f)});
     // Guards against malformed files whose node graph is not a tree.
     size_t budget = scene.nodes.size() * 4 + 16;
     while (!stack.empty() && budget-- > 0) {

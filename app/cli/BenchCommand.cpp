@@ -1,0 +1,132 @@
+// specula bench: start-up to first frame and steady frame times, per built-in scene.
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <numeric>
+
+#include <nlohmann/json.hpp>
+
+#include "Commands.h"
+#include "core/Error.h"
+#include "core/Log.h"
+#include "core/ProcessClock.h"
+#include "core/Timer.h"
+#include "gl/Info.h"
+#include "platform/Context.h"
+
+#include <epoxy/gl.h>
+
+namespace specula::cli {
+namespace {
+
+struct Summary {
+    double median = 0, p10 = 0, p90 = 0, mean = 0, min = 0, max = 0;
+};
+
+Summary summarize(std::vector<double> values)
+{
+    Summary s;
+    if (values.empty()) return s;
+    std::sort(values.begin(), values.end());
+    auto at = [&](double q) { return values[size_t(q * double(values.size() - 1) + 0.5)]; };
+    s.median = at(0.5);
+    s.p10 = at(0.1);
+    s.p90 = at(0.9);
+    s.min = values.front();
+    s.max = values.back();
+    s.mean = std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
+    return s;
+}
+
+nlohmann::json toJson(const Summary& s)
+{
+    return {{"median", s.median}, {"p10", s.p10}, {"p90", s.p90}, {"mean", s.mean}, {"min", s.min}, {"max", s.max}};
+}
+
+} // namespace
+
+int runBench(const BenchArgs& args)
+{
+    if (args.frames < 1) throw Error("--frames must be at least 1");
+    nlohmann::json results = nlohmann::json::array();
+    std::string rendererName;
+    const double processStartMs = msSinceProcessStart();
+    for (size_t i = 0; i < args.scenes.size(); ++i) {
+        const std::string& name = args.scenes[i];
+        // Start-up: a fresh context, the scene built or loaded, uploaded, shaders compiled,
+        // first frame finished. The first scene's figure also counts process launch.
+        Stopwatch startup;
+        auto context = platform::Context::createHeadless({.debug = false});
+        const double contextMs = startup.elapsedMs();
+        scene::SceneDocument document = loadSceneOrBuiltin(name);
+        const render::FrameSettings settings = resolveSettings(document, args.frame);
+        const render::View view = prepareView(document, args.frame, settings);
+        const double loadMs = startup.elapsedMs() - contextMs;
+        render::Renderer renderer;
+        renderer.setScene(document.scene);
+        renderer.render(view, settings);
+        glFinish();
+        const double startupMs = startup.elapsedMs();
+        const double sinceLaunchMs = i == 0 ? msSinceProcessStart() : -1.0;
+        if (rendererName.empty()) rendererName = gl::queryDeviceInfo().renderer;
+
+        for (int w = 0; w < args.warmup; ++w) renderer.render(view, settings);
+        glFinish();
+        renderer.setGpuTiming(true);
+        std::vector<double> cpu, gpu;
+        std::map<std::string, std::vector<double>> passes;
+        for (int f = 0; f < args.frames; ++f) {
+            Stopwatch frame;
+            renderer.render(view, settings); // waits for the timer queries, so the GPU is done
+            glFinish();
+            cpu.push_back(frame.elapsedMs());
+            double total = 0;
+            for (const auto& pass : renderer.stats().passes) {
+                passes[pass.name].push_back(pass.gpuMs);
+                total += pass.gpuMs;
+            }
+            gpu.push_back(total);
+        }
+        const Summary cpuSummary = summarize(cpu), gpuSummary = summarize(gpu);
+        nlohmann::json passJson;
+        for (const auto& [pass, values] : passes) passJson[pass] = toJson(summarize(values));
+        results.push_back({{"scene", name},
+                           {"width", settings.width},
+                           {"height", settings.height},
+                           {"msaa", settings.msaa},
+                           {"triangles", document.scene.triangleCount()},
+                           {"drawCalls", renderer.stats().drawCalls},
+                           {"startupMs", startupMs},
+                           {"startupContextMs", contextMs},
+                           {"startupLoadMs", loadMs},
+                           {"sinceLaunchMs", sinceLaunchMs},
+                           {"frames", args.frames},
+                           {"frameCpuMs", toJson(cpuSummary)},
+                           {"frameGpuMs", toJson(gpuSummary)},
+                           {"fps", 1000.0 / cpuSummary.median},
+                           {"passesGpuMs", passJson}});
+        log::info("{}: start-up {:.0f} ms, frame median {:.2f} ms", name, startupMs, cpuSummary.median);
+    }
+    (void)processStartMs;
+
+    nlohmann::json document = {{"renderer", rendererName}, {"results", results}};
+    std::ofstream out(args.output);
+    if (!out) throw Error("cannot write {}", args.output);
+    out << document.dump(2) << "\n";
+
+    std::printf("renderer: %s\n", rendererName.c_str());
+    std::printf("%-14s %10s %9s %13s %13s %11s %8s\n", "scene", "size", "start-up", "frame median", "frame p10-p90",
+                "GPU median", "fps");
+    for (const auto& r : results) {
+        const std::string size = std::to_string(r["width"].get<int>()) + "x" + std::to_string(r["height"].get<int>()) + "x" +
+                                 std::to_string(r["msaa"].get<int>());
+        const std::string spread = fmt::format("{:.1f}-{:.1f}", r["frameCpuMs"]["p10"].get<double>(), r["frameCpuMs"]["p90"].get<double>());
+        std::printf("%-14s %10s %6.0f ms %10.2f ms %10s ms %8.2f ms %8.1f\n", r["scene"].get<std::string>().c_str(), size.c_str(),
+                    r["startupMs"].get<double>(), r["frameCpuMs"]["median"].get<double>(), spread.c_str(),
+                    r["frameGpuMs"]["median"].get<double>(), r["fps"].get<double>());
+    }
+    std::printf("wrote %s\n", args.output.c_str());
+    return 0;
+}
+
+} // namespace specula::cli

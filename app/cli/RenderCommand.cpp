@@ -1,0 +1,53 @@
+#include <filesystem>
+
+#include "Commands.h"
+#include "core/Error.h"
+#include "core/ImageIO.h"
+#include "core/Log.h"
+#include "core/ProcessClock.h"
+#include "core/Timer.h"
+#include "gl/Debug.h"
+#include "platform/Context.h"
+
+namespace specula::cli {
+
+int runRender(const RenderArgs& args)
+{
+    const std::filesystem::path output = args.output;
+    checkOutputPath(output); // before any long work
+
+    Stopwatch load;
+    scene::SceneDocument document = loadSceneOrBuiltin(args.scene);
+    const render::FrameSettings settings = resolveSettings(document, args.frame);
+    int defaultLights = 0;
+    const render::View view = prepareView(document, args.frame, settings, &defaultLights);
+    log::info("loaded {} in {:.0f} ms: {} meshes, {} triangles, {} lights{}", args.scene.empty() ? "demo" : args.scene,
+              load.elapsedMs(), document.scene.meshes.size(), document.scene.triangleCount(), document.scene.lights.size(),
+              defaultLights ? " (default rig)" : "");
+
+    auto context = platform::Context::createHeadless();
+    gl::DebugMonitor debug;
+    render::Renderer renderer;
+    renderer.setScene(document.scene);
+    renderer.render(view, settings);
+
+    const std::string extension = output.extension().string();
+    if (extension == ".png") {
+        writePng(output, renderer.readImage());
+    } else if (extension == ".hdr") {
+        writeHdr(output, renderer.readRadiance());
+    } else {
+        writeExr(output, renderer.readRadiance());
+    }
+    log::info("first frame {:.0f} ms after start; wrote {} ({}x{}, {} sample{}, {} tone mapping)", msSinceProcessStart(),
+              output.string(), settings.width, settings.height, settings.msaa, settings.msaa == 1 ? "" : "s",
+              render::tonemapName(settings.tonemap));
+    if (debug.errorCount() > 0) {
+        // GL errors are bugs: never pass one off as a good image.
+        std::filesystem::remove(output);
+        throw Error("OpenGL reported {} error(s); first: {}", debug.errorCount(), debug.errors().front());
+    }
+    return 0;
+}
+
+} // namespace specula::cli

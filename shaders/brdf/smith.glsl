@@ -1,0 +1,22 @@
+// Masking-shadowing terms, written as visibility V = G / (4 NoL NoV).
+
+// Separable Smith G for GGX, as the glTF 2.0 specification (Appendix B.3.2) gives it:
+// G1(X) = 2 NoX / (NoX + sqrt(alpha^2 + (1 - alpha^2) NoX^2)), so the 4 NoL NoV cancels.
+float V_SmithGGX(float NoV, float NoL, float alpha)
+{
+    float a2 = alpha * alpha;
+    float gl = NoL + sqrt(a2 + (1.0 - a2) * NoL * NoL);
+    float gv = NoV + sqrt(a2 + (1.0 - a2) * NoV * NoV);
+    return 1.0 / (gl * gv);
+}
+
+// Schlick-GGX with k = (r + 1)^2 / 8 for punctual lights: Karis 2013, "Real Shading in
+// Unreal Engine 4", eq. 4 (r is the perceptual roughness; the remap reduces hotness).
+float V_SchlickGGX(float NoV, float NoL, float perceptualRoughness)
+{
+    float k = (perceptualRoughness + 1.0) * (perceptualRoughness + 1.0) / 8.0;
+    float gl = NoL / (NoL * (1.0 - k) + k);
+    float gv = NoV / (NoV * (1.0 - k) + k);
+    // The 1e-7 keeps grazing NoL = NoV = 0 finite; those samples carry no energy.
+    return gl * gv / max(4.0 * NoL * NoV, 1e-7);
+}

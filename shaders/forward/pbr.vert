@@ -1,0 +1,35 @@
+#version 450 core
+// Forward pass vertex shader: world-space position, normal and tangent for lighting.
+#include "../shared/Bindings.h"
+#include "../shared/FrameData.h"
+
+layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
+
+layout(location = SPECULA_ATTRIB_POSITION) in vec3 aPosition;
+layout(location = SPECULA_ATTRIB_NORMAL) in vec3 aNormal;
+layout(location = SPECULA_ATTRIB_TANGENT) in vec4 aTangent;
+layout(location = SPECULA_ATTRIB_UV0) in vec2 aUv0;
+layout(location = SPECULA_ATTRIB_UV1) in vec2 aUv1;
+layout(location = SPECULA_ATTRIB_COLOR) in vec4 aColor;
+
+uniform mat4 uModel;
+uniform mat3 uNormalMatrix;
+
+out vec3 vWorldPosition;
+out vec3 vNormal;
+out vec4 vTangent;
+out vec2 vUv0;
+out vec2 vUv1;
+out vec4 vColor;
+
+void main()
+{
+    vec4 world = uModel * vec4(aPosition, 1.0);
+    vWorldPosition = world.xyz;
+    vNormal = uNormalMatrix * aNormal;
+    vTangent = vec4(mat3(uModel) * aTangent.xyz, aTangent.w);
+    vUv0 = aUv0;
+    vUv1 = aUv1;
+    vColor = aColor;
+    gl_Position = frame.viewProjection * world;
+}

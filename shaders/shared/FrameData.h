@@ -1,0 +1,26 @@
+// Per-frame constants (uniform buffer, std140).
+#include "Prelude.h"
+
+SPECULA_SHARED_BEGIN
+
+#define SPECULA_TONEMAP_NONE 0u
+#define SPECULA_TONEMAP_REINHARD 1u
+#define SPECULA_TONEMAP_REINHARD_EXT 2u
+#define SPECULA_TONEMAP_ACES 3u
+#define SPECULA_TONEMAP_NEUTRAL 4u
+
+struct FrameData {
+    mat4 view;
+    mat4 projection;
+    mat4 viewProjection;
+    vec4 cameraPosition;   // xyz world position, w unused
+    vec4 exposure;         // x = 2^EV (linear scale), y = white point for Reinhard extended
+    vec4 ambient;          // rgb constant ambient radiance (cd/m^2) times albedo; w unused
+    uvec4 options;         // x = tone mapper (SPECULA_TONEMAP_*), y = light count
+};
+
+SPECULA_SHARED_END
+
+#ifdef __cplusplus
+static_assert(sizeof(specula::shared::FrameData) == 3 * 64 + 4 * 16);
+#endif

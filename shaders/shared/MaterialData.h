@@ -1,0 +1,30 @@
+// Material parameters (storage buffer, one record per material, indexed per draw).
+#include "Prelude.h"
+
+SPECULA_SHARED_BEGIN
+
+#define SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE 1u
+#define SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE 2u
+#define SPECULA_MATERIAL_HAS_NORMAL_TEXTURE 4u
+#define SPECULA_MATERIAL_HAS_OCCLUSION_TEXTURE 8u
+#define SPECULA_MATERIAL_HAS_EMISSIVE_TEXTURE 16u
+#define SPECULA_MATERIAL_DOUBLE_SIDED 32u
+#define SPECULA_MATERIAL_ALPHA_MASK 64u
+#define SPECULA_MATERIAL_ALPHA_BLEND 128u
+#define SPECULA_MATERIAL_USE_VERTEX_COLOR 256u
+
+struct GpuMaterial {
+    vec4 baseColorFactor;
+    vec4 emissive;        // rgb emissive factor x KHR_materials_emissive_strength, w unused
+    vec4 params;          // x metallic, y perceptual roughness, z normal scale, w occlusion strength
+    vec4 alpha;           // x alpha cutoff
+    uvec4 flags;          // x SPECULA_MATERIAL_* bits; y texCoord sets, 2 bits per texture
+                          // (base colour, metallic-roughness, normal, occlusion, emissive)
+    vec4 uvTransform[10]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
+};
+
+SPECULA_SHARED_END
+
+#ifdef __cplusplus
+static_assert(sizeof(specula::shared::GpuMaterial) == 15 * 16);
+#endif

@@ -1,0 +1,23 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace specula::gl {
+
+struct DeviceInfo {
+    std::string vendor;
+    std::string renderer;
+    std::string version;
+    std::string glslVersion;
+    /// The implementation limits the renderer relies on, by GL name.
+    std::vector<std::pair<std::string, int64_t>> limits;
+    /// Extensions the renderer uses, with whether they are present.
+    std::vector<std::pair<std::string, bool>> extensions;
+};
+
+/// Queries the current context.
+DeviceInfo queryDeviceInfo();
+
+} // namespace specula::gl

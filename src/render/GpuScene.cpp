@@ -1,0 +1,185 @@
+#include "render/GpuScene.h"
+
+#include <cstddef>
+
+#include "core/Log.h"
+#include "shaders/shared/Bindings.h"
+#include "shaders/shared/MaterialData.h"
+
+namespace specula::render {
+namespace {
+
+gl::Filter toGl(scene::Filter f)
+{
+    return f == scene::Filter::Nearest ? gl::Filter::Nearest : gl::Filter::Linear;
+}
+
+gl::Wrap toGl(scene::Wrap w)
+{
+    switch (w) {
+    case scene::Wrap::Repeat: return gl::Wrap::Repeat;
+    case scene::Wrap::MirroredRepeat: return gl::Wrap::MirroredRepeat;
+    case scene::Wrap::ClampToEdge: return gl::Wrap::ClampToEdge;
+    }
+    return gl::Wrap::Repeat;
+}
+
+void packTransform(shared::GpuMaterial& gpu, int slot, const scene::TextureRef& ref)
+{
+    // Rows of the 2x3 affine part of KHR_texture_transform's 3x3 matrix.
+    const glm::mat3 m = ref.transform.matrix();
+    gpu.uvTransform[2 * slot] = glm::vec4(m[0][0], m[1][0], m[2][0], 0.0f);
+    gpu.uvTransform[2 * slot + 1] = glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f);
+    gpu.flags.y |= uint32_t(ref.texCoord & 3) << (2 * slot);
+}
+
+} // namespace
+
+const gl::Sampler* GpuScene::sampler(const scene::Scene&, int index)
+{
+    if (index < 0 || size_t(index) >= mSamplers.size()) return &mDefaultSampler;
+    return &mSamplers[size_t(index)];
+}
+
+const gl::Texture* GpuScene::texture(const scene::Scene& scene, int image, bool srgb)
+{
+    if (image < 0 || size_t(image) >= scene.images.size()) return nullptr;
+    const scene::Image& source = scene.images[size_t(image)];
+    if (source.width <= 0 || source.height <= 0 || source.pixels.size() < size_t(source.width) * source.height * 4)
+        return nullptr; // missing or undecodable: the renderer binds a neutral texture
+    gl::Texture& slot = mTextures[size_t(image)][srgb ? 1 : 0];
+    if (!slot) {
+        gl::TextureDesc desc;
+        desc.format = srgb ? gl::Format::SRGB8_ALPHA8 : gl::Format::RGBA8;
+        desc.width = source.width;
+        desc.height = source.height;
+        desc.levels = 0;
+        desc.label = source.name.empty() ? "image " + std::to_string(image) : source.name;
+        slot = gl::Texture(desc);
+        // Rows go up top row first: GL's t = 0 is then the image's top, which is where glTF's
+        // v = 0 is, so uvs need no flip.
+        slot.upload(0, 0, 4, gl::PixelType::UnsignedByte, source.pixels.data());
+        slot.generateMipmaps();
+        mTextureBytes += source.pixels.size() * 4 / 3;
+    }
+    return &slot;
+}
+
+GpuScene::GpuScene(const scene::Scene& scene)
+    : mDefaultSampler(gl::SamplerDesc{}, "default sampler")
+{
+    mTextures.resize(scene.images.size());
+    for (size_t i = 0; i < scene.samplers.size(); ++i) {
+        const scene::Sampler& s = scene.samplers[i];
+        gl::SamplerDesc desc;
+        desc.magFilter = toGl(s.magFilter);
+        desc.minFilter = toGl(s.minFilter);
+        desc.mipFilter = !s.mipmaps ? gl::MipFilter::None : s.mipLinear ? gl::MipFilter::Linear : gl::MipFilter::Nearest;
+        desc.wrapS = toGl(s.wrapS);
+        desc.wrapT = toGl(s.wrapT);
+        mSamplers.emplace_back(desc, "sampler " + std::to_string(i));
+    }
+
+    // Materials, plus the glTF default material at the end.
+    std::vector<scene::Material> materials = scene.materials;
+    materials.push_back(scene::Material{.name = "default"});
+    std::vector<shared::GpuMaterial> gpuMaterials;
+    for (const scene::Material& m : materials) {
+        shared::GpuMaterial gpu{};
+        gpu.baseColorFactor = m.baseColorFactor;
+        gpu.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
+        gpu.params = glm::vec4(m.metallicFactor, m.roughnessFactor, m.normalScale, m.occlusionStrength);
+        gpu.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
+        for (int slot = 0; slot < 5; ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
+
+        MaterialBinding binding;
+        binding.alphaMode = m.alphaMode;
+        binding.doubleSided = m.doubleSided;
+        const struct {
+            const scene::TextureRef& ref;
+            TextureSlot slot;
+            bool srgb;
+            uint32_t flag;
+        } slots[] = {
+            {m.baseColorTexture, TextureSlot::BaseColor, true, SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE},
+            {m.metallicRoughnessTexture, TextureSlot::MetallicRoughness, false, SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE},
+            {m.normalTexture, TextureSlot::Normal, false, SPECULA_MATERIAL_HAS_NORMAL_TEXTURE},
+            {m.occlusionTexture, TextureSlot::Occlusion, false, SPECULA_MATERIAL_HAS_OCCLUSION_TEXTURE},
+            {m.emissiveTexture, TextureSlot::Emissive, true, SPECULA_MATERIAL_HAS_EMISSIVE_TEXTURE},
+        };
+        for (const auto& s : slots) {
+            if (!s.ref.valid()) continue;
+            const gl::Texture* tex = texture(scene, s.ref.image, s.srgb);
+            if (!tex) continue;
+            binding.textures[size_t(s.slot)] = tex;
+            binding.samplers[size_t(s.slot)] = sampler(scene, s.ref.sampler);
+            gpu.flags.x |= s.flag;
+            packTransform(gpu, int(s.slot), s.ref);
+        }
+        if (m.doubleSided) gpu.flags.x |= SPECULA_MATERIAL_DOUBLE_SIDED;
+        if (m.alphaMode == scene::AlphaMode::Mask) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_MASK;
+        if (m.alphaMode == scene::AlphaMode::Blend) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_BLEND;
+        gpuMaterials.push_back(gpu);
+        mMaterials.push_back(binding);
+    }
+    const int defaultMaterial = int(materials.size() - 1);
+
+    // Primitives, mesh by mesh.
+    std::vector<std::vector<int>> meshPrimitives(scene.meshes.size());
+    for (size_t meshIndex = 0; meshIndex < scene.meshes.size(); ++meshIndex) {
+        for (const scene::Primitive& p : scene.meshes[meshIndex].primitives) {
+            if (p.vertices.empty()) continue;
+            GpuPrimitive gpu;
+            const std::string name = scene.meshes[meshIndex].name;
+            gpu.vertices = gl::Buffer(p.vertices.size() * sizeof(scene::Vertex), p.vertices.data(), name + " vertices");
+            gpu.indexed = !p.indices.empty();
+            gpu.count = uint32_t(gpu.indexed ? p.indices.size() : p.vertices.size());
+            if (gpu.indexed) gpu.indices = gl::Buffer(p.indices.size() * sizeof(uint32_t), p.indices.data(), name + " indices");
+            gpu.material = p.material >= 0 && p.material < defaultMaterial ? p.material : defaultMaterial;
+            gpu.bounds = p.bounds;
+            gpu.vertexArray = gl::VertexArray(name);
+            gpu.vertexArray.vertexBuffer(0, gpu.vertices, 0, sizeof(scene::Vertex))
+                .attribute(SPECULA_ATTRIB_POSITION, 0, 3, gl::AttributeType::Float, offsetof(scene::Vertex, position))
+                .attribute(SPECULA_ATTRIB_NORMAL, 0, 3, gl::AttributeType::Float, offsetof(scene::Vertex, normal))
+                .attribute(SPECULA_ATTRIB_TANGENT, 0, 4, gl::AttributeType::Float, offsetof(scene::Vertex, tangent))
+                .attribute(SPECULA_ATTRIB_UV0, 0, 2, gl::AttributeType::Float, offsetof(scene::Vertex, uv0))
+                .attribute(SPECULA_ATTRIB_UV1, 0, 2, gl::AttributeType::Float, offsetof(scene::Vertex, uv1))
+                .attribute(SPECULA_ATTRIB_COLOR, 0, 4, gl::AttributeType::Float, offsetof(scene::Vertex, color));
+            if (gpu.indexed) gpu.vertexArray.indexBuffer(gpu.indices);
+            meshPrimitives[meshIndex].push_back(int(mPrimitives.size()));
+            mPrimitives.push_back(std::move(gpu));
+        }
+    }
+    // Vertex colours multiply base colour (glTF COLOR_0); the flag lives on the material,
+    // so a primitive with colours gets its own copy of its material record.
+    for (size_t meshIndex = 0, primitiveIndex = 0; meshIndex < scene.meshes.size(); ++meshIndex) {
+        for (const scene::Primitive& p : scene.meshes[meshIndex].primitives) {
+            if (p.vertices.empty()) continue;
+            GpuPrimitive& gpu = mPrimitives[primitiveIndex++];
+            if (!p.hasColors) continue;
+            shared::GpuMaterial copy = gpuMaterials[size_t(gpu.material)];
+            copy.flags.x |= SPECULA_MATERIAL_USE_VERTEX_COLOR;
+            gpuMaterials.push_back(copy);
+            mMaterials.push_back(mMaterials[size_t(gpu.material)]);
+            gpu.material = int(gpuMaterials.size() - 1);
+        }
+    }
+    mMaterialBuffer = gl::Buffer(gpuMaterials.size() * sizeof(shared::GpuMaterial), gpuMaterials.data(), "materials");
+
+    for (const scene::MeshInstance& instance : scene.meshInstances()) {
+        for (int primitive : meshPrimitives[size_t(instance.mesh)]) {
+            DrawItem item;
+            item.primitive = primitive;
+            item.world = instance.world;
+            item.normalMatrix = glm::transpose(glm::inverse(glm::mat3(instance.world)));
+            item.mirrored = glm::determinant(glm::mat3(instance.world)) < 0.0f;
+            mDraws.push_back(item);
+            const GpuPrimitive& p = mPrimitives[size_t(primitive)];
+            mTriangles += p.count / 3;
+        }
+    }
+    log::debug("GPU scene: {} primitives, {} draws, {} materials, {} triangles", mPrimitives.size(), mDraws.size(),
+               mMaterials.size(), mTriangles);
+}
+
+} // namespace specula::render

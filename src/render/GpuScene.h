@@ -1,0 +1,66 @@
+#pragma once
+// A scene's meshes, textures and materials uploaded to the GPU, and its draw list.
+#include <array>
+#include <vector>
+
+#include "gl/Buffer.h"
+#include "gl/Texture.h"
+#include "gl/VertexArray.h"
+#include "scene/Scene.h"
+
+namespace specula::render {
+
+struct GpuPrimitive {
+    gl::Buffer vertices;
+    gl::Buffer indices;
+    gl::VertexArray vertexArray;
+    uint32_t count = 0;   ///< indices, or vertices when not indexed
+    bool indexed = false;
+    int material = 0;     ///< index into GpuScene::materials (the default material is last)
+    scene::Bounds bounds; ///< object space
+};
+
+enum class TextureSlot { BaseColor, MetallicRoughness, Normal, Occlusion, Emissive, Count };
+
+struct MaterialBinding {
+    std::array<const gl::Texture*, size_t(TextureSlot::Count)> textures{};
+    std::array<const gl::Sampler*, size_t(TextureSlot::Count)> samplers{};
+    scene::AlphaMode alphaMode = scene::AlphaMode::Opaque;
+    bool doubleSided = false;
+};
+
+struct DrawItem {
+    int primitive = 0;
+    glm::mat4 world{1.0f};
+    glm::mat3 normalMatrix{1.0f};
+    bool mirrored = false; ///< negative determinant: front faces wind clockwise
+};
+
+class GpuScene {
+public:
+    explicit GpuScene(const scene::Scene& scene);
+
+    const std::vector<GpuPrimitive>& primitives() const { return mPrimitives; }
+    const std::vector<MaterialBinding>& materials() const { return mMaterials; }
+    const std::vector<DrawItem>& draws() const { return mDraws; }
+    const gl::Buffer& materialBuffer() const { return mMaterialBuffer; }
+    size_t triangleCount() const { return mTriangles; }
+    size_t textureBytes() const { return mTextureBytes; }
+
+private:
+    const gl::Texture* texture(const scene::Scene& scene, int image, bool srgb);
+    const gl::Sampler* sampler(const scene::Scene& scene, int index);
+
+    std::vector<GpuPrimitive> mPrimitives;
+    std::vector<MaterialBinding> mMaterials;
+    std::vector<DrawItem> mDraws;
+    gl::Buffer mMaterialBuffer;
+    // One texture per (image, colour space); images used as both get two.
+    std::vector<std::array<gl::Texture, 2>> mTextures;
+    std::vector<gl::Sampler> mSamplers;
+    gl::Sampler mDefaultSampler;
+    size_t mTriangles = 0;
+    size_t mTextureBytes = 0;
+};
+
+} // namespace specula::render

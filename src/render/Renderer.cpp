@@ -1,0 +1,371 @@
+#include "render/Renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/Log.h"
+#include "gl/Debug.h"
+#include "gl/Framebuffer.h"
+#include "gl/Program.h"
+#include "gl/State.h"
+#include "gl/Texture.h"
+#include "gl/TimerQuery.h"
+#include "gl/UniformBuffer.h"
+#include "gl/VertexArray.h"
+#include "render/GpuScene.h"
+#include "render/LightBuffer.h"
+#include "shaders/shared/Bindings.h"
+#include "shaders/shared/FrameData.h"
+
+namespace specula::render {
+
+std::optional<BrdfGeometry> parseBrdfGeometry(std::string_view name)
+{
+    if (name == "smith-ggx") return BrdfGeometry::SmithGGX;
+    if (name == "schlick-ggx") return BrdfGeometry::SchlickGGX;
+    return std::nullopt;
+}
+
+namespace {
+
+uint32_t tonemapId(Tonemap t)
+{
+    switch (t) {
+    case Tonemap::None: return SPECULA_TONEMAP_NONE;
+    case Tonemap::Reinhard: return SPECULA_TONEMAP_REINHARD;
+    case Tonemap::ReinhardExtended: return SPECULA_TONEMAP_REINHARD_EXT;
+    case Tonemap::Aces: return SPECULA_TONEMAP_ACES;
+    case Tonemap::Neutral: return SPECULA_TONEMAP_NEUTRAL;
+    }
+    return SPECULA_TONEMAP_NONE;
+}
+
+/// The forward program of one variant, with its uniform locations looked up once.
+struct ForwardProgram {
+    gl::Program program;
+    int model = -1;
+    int normalMatrix = -1;
+    int material = -1;
+};
+
+/// Six planes of the view frustum (Gribb & Hartmann 2001), normals pointing inwards.
+struct Frustum {
+    glm::vec4 planes[6];
+    explicit Frustum(const glm::mat4& m)
+    {
+        const glm::mat4 t = glm::transpose(m);
+        planes[0] = t[3] + t[0];
+        planes[1] = t[3] - t[0];
+        planes[2] = t[3] + t[1];
+        planes[3] = t[3] - t[1];
+        planes[4] = t[3] + t[2];
+        planes[5] = t[3] - t[2];
+    }
+    bool intersects(const scene::Bounds& b) const
+    {
+        if (b.empty()) return false;
+        for (const glm::vec4& p : planes) {
+            // The box corner furthest along the plane normal.
+            const glm::vec3 corner(p.x >= 0 ? b.max.x : b.min.x, p.y >= 0 ? b.max.y : b.min.y, p.z >= 0 ? b.max.z : b.min.z);
+            if (glm::dot(glm::vec3(p), corner) + p.w < 0.0f) return false;
+        }
+        return true;
+    }
+};
+
+} // namespace
+
+struct Renderer::Impl {
+    gl::State state;
+    gl::UniformBuffer<shared::FrameData> frame{"frame"};
+    LightBuffer lights;
+    std::unique_ptr<GpuScene> scene;
+
+    std::map<std::string, ForwardProgram> forwardPrograms;
+    gl::Program tonemapProgram;
+    gl::VertexArray emptyVertexArray{"fullscreen triangle"};
+    gl::Texture white;
+    gl::Texture flatNormal;
+
+    // Targets, rebuilt when size or sample count changes.
+    int width = 0, height = 0, msaa = 0;
+    gl::Texture msaaColor, msaaDepth, hdrColor, hdrDepth, ldrColor;
+    gl::Framebuffer msaaFramebuffer, hdrFramebuffer, ldrFramebuffer;
+    float lastExposureScale = 1.0f;
+
+    bool timing = false;
+    gl::TimerQuery forwardTimer, resolveTimer, tonemapTimer;
+    FrameStats stats;
+
+    Impl()
+    {
+        gl::TextureDesc desc;
+        desc.label = "white";
+        white = gl::Texture(desc);
+        const uint8_t whitePixel[4] = {255, 255, 255, 255};
+        white.upload(0, 0, 4, gl::PixelType::UnsignedByte, whitePixel);
+        desc.label = "flat normal";
+        flatNormal = gl::Texture(desc);
+        const uint8_t normalPixel[4] = {128, 128, 255, 255};
+        flatNormal.upload(0, 0, 4, gl::PixelType::UnsignedByte, normalPixel);
+    }
+
+    ForwardProgram& forwardProgram(const FrameSettings& settings)
+    {
+        std::vector<std::string> defines;
+        if (settings.brdfGeometry == BrdfGeometry::SchlickGGX) defines.push_back("BRDF_G_SCHLICK_GGX");
+        std::string key;
+        for (const auto& d : defines) key += d + ";";
+        auto it = forwardPrograms.find(key);
+        if (it != forwardPrograms.end()) return it->second;
+        ForwardProgram p;
+        p.program = gl::Program({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = defines,
+                                 .label = "forward " + key});
+        p.model = p.program.uniformLocation("uModel");
+        p.normalMatrix = p.program.uniformLocation("uNormalMatrix");
+        p.material = p.program.uniformLocation("uMaterial");
+        return forwardPrograms.emplace(key, std::move(p)).first->second;
+    }
+
+    gl::Program& tonemap()
+    {
+        if (!tonemapProgram)
+            tonemapProgram = gl::Program({.vertex = "post/fullscreen.vert", .fragment = "post/tonemap.frag", .label = "tonemap"});
+        return tonemapProgram;
+    }
+
+    void ensureTargets(int w, int h, int samples)
+    {
+        if (w == width && h == height && samples == msaa) return;
+        width = w;
+        height = h;
+        msaa = samples;
+        gl::TextureDesc desc;
+        desc.width = w;
+        desc.height = h;
+        desc.format = gl::Format::RGBA16F;
+        desc.label = "hdr colour";
+        hdrColor = gl::Texture(desc);
+        desc.format = gl::Format::RGBA8;
+        desc.label = "ldr colour";
+        ldrColor = gl::Texture(desc);
+        hdrFramebuffer = gl::Framebuffer("hdr");
+        hdrFramebuffer.attachColor(0, hdrColor);
+        ldrFramebuffer = gl::Framebuffer("ldr");
+        ldrFramebuffer.attachColor(0, ldrColor);
+        ldrFramebuffer.check();
+        if (samples > 1) {
+            desc.type = gl::TextureType::Texture2DMultisample;
+            desc.samples = samples;
+            desc.format = gl::Format::RGBA16F;
+            desc.label = "msaa colour";
+            msaaColor = gl::Texture(desc);
+            desc.format = gl::Format::Depth32F;
+            desc.label = "msaa depth";
+            msaaDepth = gl::Texture(desc);
+            msaaFramebuffer = gl::Framebuffer("msaa");
+            msaaFramebuffer.attachColor(0, msaaColor).attachDepth(msaaDepth).check();
+            hdrDepth = {};
+            hdrFramebuffer.check();
+        } else {
+            desc.format = gl::Format::Depth32F;
+            desc.label = "depth";
+            hdrDepth = gl::Texture(desc);
+            hdrFramebuffer.attachDepth(hdrDepth).check();
+            msaaColor = {};
+            msaaDepth = {};
+            msaaFramebuffer = {};
+        }
+    }
+
+    void bindMaterial(const MaterialBinding& m)
+    {
+        for (size_t slot = 0; slot < size_t(TextureSlot::Count); ++slot) {
+            const gl::Texture* texture = m.textures[slot];
+            if (!texture) texture = slot == size_t(TextureSlot::Normal) ? &flatNormal : &white;
+            state.bindTexture(int(slot), *texture);
+            state.bindSampler(int(slot), m.samplers[slot]);
+        }
+    }
+
+    void drawScene(const View& view, const FrameSettings& settings)
+    {
+        ForwardProgram& program = forwardProgram(settings);
+        state.useProgram(program.program);
+        frame.bind(SPECULA_BINDING_FRAME);
+        lights.bind();
+        if (!scene) return;
+        gl::bindStorageBuffer(SPECULA_BINDING_MATERIALS, scene->materialBuffer());
+
+        const Frustum frustum(view.projection * view.view);
+        struct Blended {
+            const DrawItem* item;
+            float depth;
+        };
+        std::vector<Blended> blended;
+        auto draw = [&](const DrawItem& item, bool blend) {
+            const GpuPrimitive& p = scene->primitives()[size_t(item.primitive)];
+            const MaterialBinding& m = scene->materials()[size_t(p.material)];
+            gl::PipelineDesc pipeline;
+            pipeline.cull = m.doubleSided ? gl::CullMode::None : gl::CullMode::Back;
+            pipeline.frontFaceClockwise = item.mirrored;
+            if (blend) {
+                pipeline.blend = gl::BlendMode::Alpha;
+                pipeline.noDepthWrite = true;
+            }
+            state.apply(pipeline);
+            bindMaterial(m);
+            program.program.set(program.model, item.world);
+            program.program.set(program.normalMatrix, item.normalMatrix);
+            program.program.set(program.material, uint32_t(p.material));
+            state.bindVertexArray(p.vertexArray);
+            state.drawTriangles(p.count, p.indexed);
+            stats.triangles += p.count / 3;
+        };
+        for (const DrawItem& item : scene->draws()) {
+            const GpuPrimitive& p = scene->primitives()[size_t(item.primitive)];
+            if (!frustum.intersects(p.bounds.transformed(item.world))) continue;
+            if (scene->materials()[size_t(p.material)].alphaMode == scene::AlphaMode::Blend) {
+                const glm::vec3 center = glm::vec3(item.world * glm::vec4(p.bounds.center(), 1.0f));
+                blended.push_back({&item, (view.view * glm::vec4(center, 1.0f)).z});
+                continue;
+            }
+            draw(item, false);
+        }
+        // Back to front: view-space z is negative in front of the camera, most negative = farthest.
+        std::stable_sort(blended.begin(), blended.end(), [](const Blended& a, const Blended& b) { return a.depth < b.depth; });
+        for (const Blended& b : blended) draw(*b.item, true);
+    }
+};
+
+Renderer::Renderer() : mImpl(std::make_unique<Impl>()) {}
+Renderer::~Renderer() = default;
+
+void Renderer::setScene(const scene::Scene& scene)
+{
+    mImpl->scene = std::make_unique<GpuScene>(scene);
+    mImpl->lights.setAll(placeLights(scene));
+}
+
+LightBuffer& Renderer::lights()
+{
+    return mImpl->lights;
+}
+
+void Renderer::prepare(const FrameSettings& settings)
+{
+    mImpl->forwardProgram(settings);
+    mImpl->tonemap();
+}
+
+void Renderer::setGpuTiming(bool enabled)
+{
+    mImpl->timing = enabled;
+}
+
+const FrameStats& Renderer::stats() const
+{
+    return mImpl->stats;
+}
+
+gl::State& Renderer::state()
+{
+    return mImpl->state;
+}
+
+void Renderer::render(const View& view, const FrameSettings& settings)
+{
+    Impl& r = *mImpl;
+    const int samples = std::clamp(settings.msaa, 1, 16);
+    r.ensureTargets(std::max(settings.width, 1), std::max(settings.height, 1), samples);
+    r.stats = {};
+    r.state.resetCounters();
+
+    auto& f = r.frame.data();
+    f.view = view.view;
+    f.projection = view.projection;
+    f.viewProjection = view.projection * view.view;
+    f.cameraPosition = glm::vec4(view.position, 1.0f);
+    r.lastExposureScale = std::exp2(settings.exposureEv);
+    f.exposure = glm::vec4(r.lastExposureScale, settings.reinhardWhite, 0.0f, 0.0f);
+    f.ambient = glm::vec4(settings.ambient, 0.0f);
+    f.options = glm::uvec4(tonemapId(settings.tonemap), uint32_t(r.lights.count()), 0u, 0u);
+    r.frame.upload();
+
+    {
+        gl::DebugGroup group("forward");
+        if (r.timing) r.forwardTimer.begin();
+        gl::Framebuffer& target = samples > 1 ? r.msaaFramebuffer : r.hdrFramebuffer;
+        r.state.bindFramebuffer(&target);
+        r.state.viewport(0, 0, r.width, r.height);
+        // Depth writes must be on for the clear to reach the depth buffer.
+        r.state.apply({});
+        target.clearColor(0, settings.background.x, settings.background.y, settings.background.z, 1.0f);
+        target.clearDepth(1.0f);
+        r.drawScene(view, settings);
+        if (r.timing) r.forwardTimer.end();
+    }
+    if (samples > 1) {
+        gl::DebugGroup group("resolve");
+        if (r.timing) r.resolveTimer.begin();
+        r.msaaFramebuffer.blitColorTo(r.hdrFramebuffer, r.width, r.height);
+        if (r.timing) r.resolveTimer.end();
+    }
+    {
+        gl::DebugGroup group("tonemap");
+        if (r.timing) r.tonemapTimer.begin();
+        r.state.bindFramebuffer(&r.ldrFramebuffer);
+        r.state.viewport(0, 0, r.width, r.height);
+        r.state.apply({.noDepthTest = true, .noDepthWrite = true});
+        r.state.useProgram(r.tonemap());
+        r.frame.bind(SPECULA_BINDING_FRAME);
+        r.state.bindTexture(SPECULA_UNIT_POST_INPUT, r.hdrColor);
+        r.state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
+        r.state.bindVertexArray(r.emptyVertexArray);
+        r.state.drawTriangles(3, false);
+        if (r.timing) r.tonemapTimer.end();
+    }
+    r.stats.drawCalls = r.state.drawCalls();
+    if (r.timing) {
+        r.stats.passes.push_back({"forward", r.forwardTimer.elapsedMs()});
+        if (samples > 1) r.stats.passes.push_back({"resolve", r.resolveTimer.elapsedMs()});
+        r.stats.passes.push_back({"tonemap", r.tonemapTimer.elapsedMs()});
+    }
+}
+
+ImageRGBA8 Renderer::readImage() const
+{
+    const Impl& r = *mImpl;
+    ImageRGBA8 image;
+    image.width = r.width;
+    image.height = r.height;
+    const std::vector<uint8_t> pixels = r.ldrColor.readBytes(0, 4);
+    image.pixels.resize(pixels.size());
+    // GL's first row is the bottom one; files want the top one first.
+    const size_t row = size_t(r.width) * 4;
+    for (int y = 0; y < r.height; ++y)
+        std::copy_n(pixels.begin() + ptrdiff_t(size_t(r.height - 1 - y) * row), row, image.pixels.begin() + ptrdiff_t(size_t(y) * row));
+    return image;
+}
+
+ImageFloat Renderer::readRadiance() const
+{
+    const Impl& r = *mImpl;
+    ImageFloat image;
+    image.width = r.width;
+    image.height = r.height;
+    const std::vector<float> pixels = r.hdrColor.readFloat(0, 4);
+    image.pixels.resize(pixels.size());
+    const size_t row = size_t(r.width) * 4;
+    for (int y = 0; y < r.height; ++y) {
+        for (size_t x = 0; x < row; ++x) {
+            const float value = pixels[size_t(r.height - 1 - y) * row + x];
+            // Alpha stays coverage; colour channels carry the exposure like the PNG does.
+            image.pixels[size_t(y) * row + x] = (x % 4 == 3) ? value : value * r.lastExposureScale;
+        }
+    }
+    return image;
+}
+
+} // namespace specula::render

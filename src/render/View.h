@@ -1,0 +1,28 @@
+#pragma once
+// Camera matrices for a frame.
+#include <glm/glm.hpp>
+
+#include "scene/Scene.h"
+
+namespace specula::render {
+
+struct View {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::vec3 position{0.0f};
+};
+
+/// The scene's camera `index` (in Scene::cameraInstances() order) for a viewport of `aspect`.
+/// The viewport's aspect wins over the camera's aspectRatio so images are never stretched.
+/// Throws specula::Error when there is no such camera.
+View cameraView(const scene::Scene& scene, int index, float aspect);
+
+/// A perspective view that frames `bounds` from the front (+Z), slightly above.
+View frameBounds(const scene::Bounds& bounds, float aspect, float yfov = glm::radians(45.0f));
+
+/// cameraView(index) if index >= 0; else the first camera; else frameBounds(scene bounds).
+View defaultView(const scene::Scene& scene, int index, float aspect);
+
+View lookAtView(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float yfov, float aspect, float znear, float zfar);
+
+} // namespace specula::render

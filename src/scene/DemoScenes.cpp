@@ -1,0 +1,186 @@
+#include "scene/DemoScenes.h"
+
+#include <algorithm>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/Procedural.h"
+
+namespace specula::scene {
+
+glm::quat lookRotation(glm::vec3 direction, glm::vec3 up)
+{
+    const glm::vec3 forward = glm::normalize(direction);
+    glm::vec3 right = glm::cross(forward, up);
+    if (glm::dot(right, right) < 1e-10f) {
+        // Looking along up: any up perpendicular to forward will do, chosen stably.
+        const glm::vec3 alternative = std::abs(forward.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
+        right = glm::cross(forward, alternative);
+    }
+    right = glm::normalize(right);
+    const glm::vec3 trueUp = glm::cross(right, forward);
+    // Columns: local +X -> right, +Y -> up, +Z -> -forward.
+    return glm::quat_cast(glm::mat3(right, trueUp, -forward));
+}
+
+int addLight(Scene& scene, const Light& light, glm::vec3 position, glm::vec3 direction)
+{
+    scene.lights.push_back(light);
+    Node node;
+    node.name = light.name;
+    node.light = int(scene.lights.size() - 1);
+    node.translation = position;
+    node.rotation = lookRotation(direction);
+    return scene.addNode(std::move(node));
+}
+
+int addCamera(Scene& scene, const Camera& camera, glm::vec3 position, glm::vec3 target, glm::vec3 up)
+{
+    scene.cameras.push_back(camera);
+    Node node;
+    node.name = camera.name;
+    node.camera = int(scene.cameras.size() - 1);
+    node.translation = position;
+    node.rotation = lookRotation(target - position, up);
+    return scene.addNode(std::move(node));
+}
+
+int addDefaultLightRig(Scene& scene, glm::vec3 viewDirection)
+{
+    // Build a frame around the view direction so the rig follows the camera.
+    const glm::vec3 back = glm::normalize(viewDirection);
+    const glm::quat frame = lookRotation(-back);
+    const glm::vec3 right = frame * glm::vec3(1, 0, 0);
+    const glm::vec3 up = frame * glm::vec3(0, 1, 0);
+    struct Rig {
+        const char* name;
+        glm::vec3 from; // direction from the scene towards the light
+        float lux;
+    };
+    const Rig rig[] = {
+        {"default key", glm::normalize(-0.6f * right + 0.8f * up + 0.7f * back), 3.0f},
+        {"default fill", glm::normalize(0.9f * right + 0.1f * up + 0.4f * back), 1.0f},
+        {"default rim", glm::normalize(0.3f * right + 0.6f * up - 0.8f * back), 2.0f},
+    };
+    for (const Rig& r : rig) {
+        Light light;
+        light.name = r.name;
+        light.type = Light::Type::Directional;
+        light.intensity = r.lux;
+        addLight(scene, light, glm::vec3(0.0f), -r.from);
+    }
+    return 3;
+}
+
+Scene makeDemoScene()
+{
+    Scene scene;
+    scene.name = "demo";
+    const int n = 5;
+    const float spacing = 1.2f;
+    const Primitive sphere = makeUvSphere(0.5f, 64, 32);
+    for (int row = 0; row < n; ++row) {
+        for (int col = 0; col < n; ++col) {
+            Material material;
+            material.name = "sphere";
+            // Gold-ish for metals, a warm white for dielectrics, so both lobes read clearly.
+            const float metallic = float(row) / float(n - 1);
+            material.baseColorFactor = glm::mix(glm::vec4(0.8f, 0.8f, 0.8f, 1.0f), glm::vec4(1.0f, 0.78f, 0.34f, 1.0f), metallic);
+            material.metallicFactor = metallic;
+            material.roughnessFactor = std::clamp(float(col) / float(n - 1), 0.05f, 1.0f);
+            const glm::vec3 position((float(col) - 2.0f) * spacing, 0.6f + float(row) * spacing, 0.0f);
+            addShape(scene, sphere, material, glm::translate(glm::mat4(1.0f), position), "sphere");
+        }
+    }
+    Material floor;
+    floor.name = "floor";
+    floor.baseColorFactor = glm::vec4(0.35f, 0.35f, 0.38f, 1.0f);
+    floor.metallicFactor = 0.0f;
+    floor.roughnessFactor = 0.6f;
+    addShape(scene, makePlane(14.0f, 7.0f), floor, glm::mat4(1.0f), "floor");
+
+    const struct {
+        glm::vec3 color;
+        glm::vec3 position;
+    } points[] = {
+        {{1.0f, 0.25f, 0.2f}, {-3.5f, 1.0f, 2.0f}},
+        {{0.25f, 0.5f, 1.0f}, {3.5f, 1.0f, 2.0f}},
+        {{0.3f, 1.0f, 0.35f}, {0.0f, 5.6f, 1.5f}},
+    };
+    int index = 0;
+    for (const auto& p : points) {
+        Light light;
+        light.name = "point " + std::to_string(++index);
+        light.type = Light::Type::Point;
+        light.color = p.color;
+        light.intensity = 8.0f; // cd
+        light.range = 12.0f;
+        addLight(scene, light, p.position, {0, 0, -1});
+    }
+    Light spot;
+    spot.name = "spot";
+    spot.type = Light::Type::Spot;
+    spot.color = {1.0f, 0.95f, 0.85f};
+    spot.intensity = 40.0f; // cd
+    spot.innerConeAngle = glm::radians(12.0f);
+    spot.outerConeAngle = glm::radians(22.0f);
+    const glm::vec3 spotPosition(0.0f, 6.5f, 4.0f);
+    addLight(scene, spot, spotPosition, glm::vec3(0.0f, 0.0f, 0.5f) - spotPosition);
+    Light sun;
+    sun.name = "sun";
+    sun.type = Light::Type::Directional;
+    sun.color = {1.0f, 0.97f, 0.92f};
+    sun.intensity = 2.0f; // lux
+    addLight(scene, sun, glm::vec3(0.0f), glm::normalize(glm::vec3(0.4f, -1.0f, -0.6f)));
+
+    Camera camera;
+    camera.name = "demo camera";
+    camera.yfov = glm::radians(40.0f);
+    camera.znear = 0.1f;
+    camera.zfar = 100.0f;
+    const int node = addCamera(scene, camera, {0.0f, 3.4f, 9.0f}, {0.0f, 2.6f, 0.0f});
+    // The scene's first camera is the one first met walking the roots: move it to the front.
+    scene.roots.pop_back();
+    scene.roots.insert(scene.roots.begin(), node);
+    return scene;
+}
+
+Scene makeLearnOpenGlScene()
+{
+    Scene scene;
+    scene.name = "learnopengl";
+    const Primitive sphere = makeUvSphere(1.0f, 64, 64);
+    for (int row = 0; row < 7; ++row) {
+        for (int col = 0; col < 7; ++col) {
+            Material material;
+            material.baseColorFactor = glm::vec4(0.5f, 0.0f, 0.0f, 1.0f);
+            material.metallicFactor = float(row) / 7.0f;
+            material.roughnessFactor = std::clamp(float(col) / 7.0f, 0.05f, 1.0f);
+            const glm::vec3 position((float(col) - 3.0f) * 2.5f, (float(row) - 3.0f) * 2.5f, 0.0f);
+            addShape(scene, sphere, material, glm::translate(glm::mat4(1.0f), position), "sphere");
+        }
+    }
+    const glm::vec3 lightPositions[] = {{-10, 10, 10}, {10, 10, 10}, {-10, -10, 10}, {10, -10, 10}};
+    for (const glm::vec3& p : lightPositions) {
+        Light light;
+        light.type = Light::Type::Point;
+        light.color = glm::vec3(1.0f);
+        light.intensity = 300.0f; // the tutorial's colour (300, 300, 300) with 1/d^2 falloff
+        addLight(scene, light, p, {0, 0, -1});
+        Material lamp;
+        lamp.baseColorFactor = glm::vec4(1.0f);
+        lamp.metallicFactor = 0.0f;
+        lamp.roughnessFactor = 0.5f;
+        addShape(scene, sphere, lamp, glm::scale(glm::translate(glm::mat4(1.0f), p), glm::vec3(0.5f)), "light sphere");
+    }
+    Camera camera;
+    camera.yfov = glm::radians(45.0f);
+    camera.znear = 0.1f;
+    camera.zfar = 100.0f;
+    const int node = addCamera(scene, camera, {0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, 0.0f});
+    scene.roots.pop_back();
+    scene.roots.insert(scene.roots.begin(), node);
+    return scene;
+}
+
+} // namespace specula::scene

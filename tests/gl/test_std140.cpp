@@ -1,0 +1,65 @@
+// The C++ mirrors of shaders/shared/ agree with the layout the GL compiler gives the blocks.
+#include "GlTestContext.h"
+
+#include <epoxy/gl.h>
+
+#include "gl/Program.h"
+#include "shaders/shared/FrameData.h"
+#include "shaders/shared/LightData.h"
+#include "shaders/shared/MaterialData.h"
+
+using namespace specula;
+using specula::test::GlTest;
+
+namespace {
+
+GLint memberOffset(GLuint program, GLenum interface, const char* name)
+{
+    const GLuint index = glGetProgramResourceIndex(program, interface, name);
+    if (index == GL_INVALID_INDEX) return -1;
+    const GLenum property = GL_OFFSET;
+    GLint offset = -1;
+    glGetProgramResourceiv(program, interface, index, 1, &property, 1, nullptr, &offset);
+    return offset;
+}
+
+GLint blockSize(GLuint program, GLenum interface, const char* name)
+{
+    const GLuint index = glGetProgramResourceIndex(program, interface, name);
+    const GLenum property = GL_BUFFER_DATA_SIZE;
+    GLint size = -1;
+    glGetProgramResourceiv(program, interface, index, 1, &property, 1, nullptr, &size);
+    return size;
+}
+
+} // namespace
+
+TEST_F(GlTest, SharedStructsMatchGlslLayout)
+{
+    const gl::Program program({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag"});
+    const GLuint id = program.id();
+    using shared::FrameData;
+    using shared::GpuLight;
+    using shared::GpuMaterial;
+    using shared::LightBlock;
+
+    EXPECT_EQ(blockSize(id, GL_UNIFORM_BLOCK, "FrameBlock"), GLint(sizeof(FrameData)));
+    EXPECT_EQ(memberOffset(id, GL_UNIFORM, "frame.viewProjection"), GLint(offsetof(FrameData, viewProjection)));
+    EXPECT_EQ(memberOffset(id, GL_UNIFORM, "frame.cameraPosition"), GLint(offsetof(FrameData, cameraPosition)));
+    EXPECT_EQ(memberOffset(id, GL_UNIFORM, "frame.ambient"), GLint(offsetof(FrameData, ambient)));
+
+    EXPECT_EQ(blockSize(id, GL_UNIFORM_BLOCK, "LightsBlock"), GLint(sizeof(LightBlock)));
+    EXPECT_EQ(memberOffset(id, GL_UNIFORM, "lightData.count"), GLint(offsetof(LightBlock, count)));
+    EXPECT_EQ(memberOffset(id, GL_UNIFORM, "lightData.lights[0].positionRange"), GLint(offsetof(LightBlock, lights)));
+    EXPECT_EQ(memberOffset(id, GL_UNIFORM, "lightData.lights[0].spot"),
+              GLint(offsetof(LightBlock, lights) + offsetof(GpuLight, spot)));
+
+    EXPECT_EQ(memberOffset(id, GL_BUFFER_VARIABLE, "materials[0].params"), GLint(offsetof(GpuMaterial, params)));
+    EXPECT_EQ(memberOffset(id, GL_BUFFER_VARIABLE, "materials[0].flags"), GLint(offsetof(GpuMaterial, flags)));
+    EXPECT_EQ(memberOffset(id, GL_BUFFER_VARIABLE, "materials[0].uvTransform[0]"), GLint(offsetof(GpuMaterial, uvTransform)));
+    const GLuint index = glGetProgramResourceIndex(id, GL_BUFFER_VARIABLE, "materials[0].baseColorFactor");
+    const GLenum stride = GL_TOP_LEVEL_ARRAY_STRIDE;
+    GLint arrayStride = 0;
+    glGetProgramResourceiv(id, GL_BUFFER_VARIABLE, index, 1, &stride, 1, nullptr, &arrayStride);
+    EXPECT_EQ(arrayStride, GLint(sizeof(GpuMaterial)));
+}
