@@ -1,0 +1,1134 @@
+// glTF import: real sample models (counts taken from their JSON, not from the loader) and
+// small hand-made files, broken in the ways real files break.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/constants.hpp>
+#include <nlohmann/json.hpp>
+
+#include "core/Error.h"
+#include "scene/GltfImporter.h"
+
+namespace fs = std::filesystem;
+using namespace specula;
+using namespace specula::scene;
+using nlohmann::json;
+
+namespace {
+
+const fs::path kModels = fs::path(SPECULA_ASSETS_DIR) / "models";
+
+/// A fresh directory under the system temp directory, removed with everything in it.
+class TempDir {
+public:
+    TempDir()
+    {
+        std::random_device random;
+        mPath = fs::temp_directory_path() / ("specula-gltf-" + std::to_string(random()));
+        fs::create_directories(mPath);
+    }
+    ~TempDir()
+    {
+        std::error_code ec;
+        fs::remove_all(mPath, ec);
+    }
+    fs::path operator/(const std::string& name) const { return mPath / name; }
+
+private:
+    fs::path mPath;
+};
+
+void writeFile(const fs::path& path, const std::string& bytes)
+{
+    std::ofstream out(path, std::ios::binary);
+    out.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+std::string readFile(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// The message of the Error `f` throws; fails the test if it throws nothing or something else.
+template <typename F>
+std::string errorOf(F&& f)
+{
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "threw a non-Error exception: " << e.what();
+        return {};
+    }
+    ADD_FAILURE() << "did not throw";
+    return {};
+}
+
+std::string base64(const std::vector<uint8_t>& data)
+{
+    static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < data.size(); i += 3) {
+        const uint32_t n = uint32_t(data[i]) << 16 | (i + 1 < data.size() ? uint32_t(data[i + 1]) << 8 : 0u) |
+                           (i + 2 < data.size() ? uint32_t(data[i + 2]) : 0u);
+        out += kAlphabet[(n >> 18) & 63];
+        out += kAlphabet[(n >> 12) & 63];
+        out += i + 1 < data.size() ? kAlphabet[(n >> 6) & 63] : '=';
+        out += i + 2 < data.size() ? kAlphabet[n & 63] : '=';
+    }
+    return out;
+}
+
+constexpr int kUByte = 5121, kUShort = 5123, kUInt = 5125, kFloat = 5126;
+
+/// Builds small .gltf files: one buffer, embedded as a data URI unless written externally.
+struct GltfBuilder {
+    json doc = {{"asset", {{"version", "2.0"}}}};
+    std::vector<uint8_t> bin;
+
+    int view(const void* data, size_t size)
+    {
+        while (bin.size() % 4 != 0) bin.push_back(0);
+        const size_t offset = bin.size();
+        bin.resize(offset + size);
+        std::memcpy(bin.data() + offset, data, size);
+        doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", size}});
+        return int(doc["bufferViews"].size() - 1);
+    }
+    int accessor(int bufferView, int componentType, size_t count, const std::string& type, bool normalized = false)
+    {
+        json a = {{"bufferView", bufferView}, {"componentType", componentType}, {"count", count}, {"type", type}};
+        if (normalized) a["normalized"] = true;
+        doc["accessors"].push_back(a);
+        return int(doc["accessors"].size() - 1);
+    }
+    template <typename T>
+    int data(const std::vector<T>& values, int componentType, size_t components, const std::string& type,
+             bool normalized = false)
+    {
+        return accessor(view(values.data(), values.size() * sizeof(T)), componentType, values.size() / components, type,
+                        normalized);
+    }
+    int vec3(const std::vector<float>& v) { return data(v, kFloat, 3, "VEC3"); }
+    int vec2(const std::vector<float>& v) { return data(v, kFloat, 2, "VEC2"); }
+    int indices(const std::vector<uint16_t>& v) { return data(v, kUShort, 1, "SCALAR"); }
+
+    /// Adds a mesh with one primitive and a node showing it; returns the primitive's JSON.
+    json& primitive(json attributes, int mode = 4, int indicesAccessor = -1)
+    {
+        json p = {{"attributes", std::move(attributes)}, {"mode", mode}};
+        if (indicesAccessor >= 0) p["indices"] = indicesAccessor;
+        doc["meshes"].push_back({{"primitives", json::array({p})}});
+        const int mesh = int(doc["meshes"].size() - 1);
+        doc["nodes"].push_back({{"mesh", mesh}});
+        if (!doc.contains("scenes")) doc["scenes"] = json::array({{{"nodes", json::array()}}});
+        doc["scenes"][0]["nodes"].push_back(int(doc["nodes"].size() - 1));
+        return doc["meshes"][size_t(mesh)]["primitives"][0];
+    }
+
+    /// Writes `name` into `dir`; with an empty `binName` the buffer is a data URI.
+    fs::path write(const TempDir& dir, const std::string& name, const std::string& binName = {})
+    {
+        json out = doc;
+        if (!bin.empty()) {
+            const std::string uri = binName.empty() ? "data:application/octet-stream;base64," + base64(bin) : binName;
+            out["buffers"] = json::array({{{"byteLength", bin.size()}, {"uri", uri}}});
+            if (!binName.empty()) writeFile(dir / binName, std::string(bin.begin(), bin.end()));
+        }
+        writeFile(dir / name, out.dump());
+        return dir / name;
+    }
+};
+
+/// A unit right triangle in the XY plane, facing +Z.
+const std::vector<float> kTriangle = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+
+/// An 8-bit RGB PNG of `width` x `height` from a tiny uncompressed deflate stream: enough for
+/// tests, no zlib needed. `bits16` writes 16-bit samples.
+std::vector<uint8_t> makePng(int width, int height, const std::vector<uint16_t>& samples, bool bits16)
+{
+    auto crc32 = [](const uint8_t* p, size_t n) {
+        uint32_t c = 0xFFFFFFFFu;
+        for (size_t i = 0; i < n; ++i) {
+            c ^= p[i];
+            for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+        }
+        return ~c;
+    };
+    auto be32 = [](std::vector<uint8_t>& v, uint32_t x) {
+        for (int s = 24; s >= 0; s -= 8) v.push_back(uint8_t(x >> s));
+    };
+    std::vector<uint8_t> raw; // filter byte 0 per row, then samples big endian
+    const size_t perRow = size_t(width) * 3;
+    for (int y = 0; y < height; ++y) {
+        raw.push_back(0);
+        for (size_t i = 0; i < perRow; ++i) {
+            const uint16_t s = samples[size_t(y) * perRow + i];
+            if (bits16) raw.push_back(uint8_t(s >> 8));
+            raw.push_back(uint8_t(s));
+        }
+    }
+    std::vector<uint8_t> z = {0x78, 0x01, 0x01}; // zlib header, one final stored block
+    z.push_back(uint8_t(raw.size()));
+    z.push_back(uint8_t(raw.size() >> 8));
+    z.push_back(uint8_t(~raw.size()));
+    z.push_back(uint8_t(~raw.size() >> 8));
+    z.insert(z.end(), raw.begin(), raw.end());
+    uint32_t a = 1, b = 0;
+    for (uint8_t byte : raw) {
+        a = (a + byte) % 65521;
+        b = (b + a) % 65521;
+    }
+    be32(z, b << 16 | a);
+
+    std::vector<uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    auto chunk = [&](const char* type, const std::vector<uint8_t>& payload) {
+        be32(png, uint32_t(payload.size()));
+        std::vector<uint8_t> body(type, type + 4);
+        body.insert(body.end(), payload.begin(), payload.end());
+        png.insert(png.end(), body.begin(), body.end());
+        be32(png, crc32(body.data(), body.size()));
+    };
+    std::vector<uint8_t> header;
+    be32(header, uint32_t(width));
+    be32(header, uint32_t(height));
+    header.insert(header.end(), {uint8_t(bits16 ? 16 : 8), 2, 0, 0, 0}); // RGB, no interlace
+    chunk("IHDR", header);
+    chunk("IDAT", z);
+    chunk("IEND", {});
+    return png;
+}
+
+size_t primitiveCount(const Scene& scene)
+{
+    size_t n = 0;
+    for (const auto& mesh : scene.meshes) n += mesh.primitives.size();
+    return n;
+}
+
+void expectValidTangents(const Primitive& p)
+{
+    ASSERT_TRUE(p.hasTangents);
+    for (const Vertex& v : p.vertices) {
+        const glm::vec3 t(v.tangent);
+        ASSERT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z));
+        EXPECT_NEAR(glm::length(t), 1.0f, 1e-3f);
+        EXPECT_TRUE(v.tangent.w == 1.0f || v.tangent.w == -1.0f);
+    }
+}
+
+} // namespace
+
+// --- real models -----------------------------------------------------------------------------
+
+TEST(GltfModels, DamagedHelmetGlb)
+{
+    const Scene scene = loadGltf(kModels / "DamagedHelmet/DamagedHelmet.glb");
+    EXPECT_EQ(scene.name, "DamagedHelmet");
+    EXPECT_EQ(scene.nodes.size(), 1u);
+    EXPECT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(primitiveCount(scene), 1u);
+    EXPECT_EQ(scene.materials.size(), 1u);
+    EXPECT_EQ(scene.samplers.size(), 1u);
+    ASSERT_EQ(scene.images.size(), 5u);
+    for (const Image& image : scene.images) {
+        EXPECT_EQ(image.width, 2048);
+        EXPECT_EQ(image.height, 2048);
+        EXPECT_EQ(image.channels, 4);
+        EXPECT_EQ(image.pixels.size(), size_t(2048) * 2048 * 4);
+    }
+    EXPECT_TRUE(scene.warnings.empty());
+    EXPECT_EQ(scene.roots, std::vector<int>{0});
+
+    const Material& m = scene.materials[0];
+    EXPECT_EQ(m.name, "Material_MR");
+    EXPECT_EQ(m.baseColorTexture.image, 0);
+    EXPECT_EQ(m.metallicRoughnessTexture.image, 1);
+    EXPECT_EQ(m.emissiveTexture.image, 2);
+    EXPECT_EQ(m.occlusionTexture.image, 3);
+    EXPECT_EQ(m.normalTexture.image, 4);
+    EXPECT_EQ(m.baseColorTexture.sampler, 0);
+    EXPECT_EQ(m.emissiveFactor, glm::vec3(1.0f));
+    EXPECT_EQ(m.alphaMode, AlphaMode::Opaque);
+
+    // The node's rotation is [x y z w] = [0.7071068, 0, 0, 0.7071068] in the file.
+    EXPECT_NEAR(scene.nodes[0].rotation.x, 0.7071068f, 1e-6f);
+    EXPECT_NEAR(scene.nodes[0].rotation.w, 0.7071068f, 1e-6f);
+    EXPECT_EQ(scene.nodes[0].mesh, 0);
+
+    const Primitive& p = scene.meshes[0].primitives[0];
+    EXPECT_EQ(p.indices.size(), 46356u);
+    // 14556 vertices in the file; generating tangents may split mirrored ones.
+    EXPECT_GE(p.vertices.size(), 14556u);
+    EXPECT_FALSE(p.hasColors);
+    // No TANGENT in the file but a normal map: tangents are generated.
+    expectValidTangents(p);
+    // POSITION min/max from the accessor.
+    EXPECT_NEAR(p.bounds.min.x, -0.9474585652351379f, 1e-6f);
+    EXPECT_NEAR(p.bounds.min.y, -1.18715500831604f, 1e-6f);
+    EXPECT_NEAR(p.bounds.max.z, 0.900973916053772f, 1e-6f);
+}
+
+TEST(GltfModels, WaterBottleGltfWithExternalImages)
+{
+    const Scene scene = loadGltf(kModels / "WaterBottle/WaterBottle.gltf");
+    EXPECT_EQ(scene.nodes.size(), 1u);
+    EXPECT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(primitiveCount(scene), 1u);
+    EXPECT_EQ(scene.materials.size(), 1u);
+    EXPECT_EQ(scene.samplers.size(), 0u);
+    ASSERT_EQ(scene.images.size(), 4u);
+    for (const Image& image : scene.images) {
+        EXPECT_EQ(image.width, 2048);
+        EXPECT_EQ(image.pixels.size(), size_t(2048) * 2048 * 4);
+    }
+    EXPECT_EQ(scene.images[0].name, "WaterBottle_baseColor.png");
+    const Material& m = scene.materials[0];
+    EXPECT_EQ(m.name, "BottleMat");
+    EXPECT_EQ(m.baseColorTexture.image, 0);
+    EXPECT_EQ(m.baseColorTexture.sampler, -1); // the textures have no sampler
+    EXPECT_EQ(m.occlusionTexture.image, 1);
+    EXPECT_EQ(m.metallicRoughnessTexture.image, 1);
+    EXPECT_EQ(m.normalTexture.image, 2);
+    EXPECT_EQ(m.emissiveTexture.image, 3);
+    EXPECT_TRUE(scene.meshes[0].primitives[0].hasTangents); // from the file
+    EXPECT_NEAR(scene.nodes[0].rotation.y, 1.0f, 1e-6f);
+}
+
+TEST(GltfModels, NormalTangentMirrorTest)
+{
+    const Scene scene = loadGltf(kModels / "NormalTangentMirrorTest/NormalTangentMirrorTest.glb");
+    EXPECT_EQ(scene.nodes.size(), 1u);
+    EXPECT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(primitiveCount(scene), 1u);
+    EXPECT_EQ(scene.materials.size(), 1u);
+    EXPECT_EQ(scene.images.size(), 3u);
+    EXPECT_EQ(scene.samplers.size(), 1u);
+    const Material& m = scene.materials[0];
+    EXPECT_TRUE(m.doubleSided);
+    EXPECT_EQ(m.normalTexture.image, 1);
+    EXPECT_EQ(m.occlusionTexture.image, 0);
+    EXPECT_EQ(m.baseColorTexture.image, 2);
+    const Primitive& p = scene.meshes[0].primitives[0];
+    EXPECT_EQ(p.vertices.size(), 2770u);
+    // The file's tangents: 2690 right-handed, 80 mirrored.
+    EXPECT_EQ(std::count_if(p.vertices.begin(), p.vertices.end(), [](const Vertex& v) { return v.tangent.w < 0; }), 80);
+}
+
+TEST(GltfModels, AlphaBlendModeTest)
+{
+    const Scene scene = loadGltf(kModels / "AlphaBlendModeTest/AlphaBlendModeTest.glb");
+    EXPECT_EQ(scene.nodes.size(), 9u);
+    EXPECT_EQ(scene.meshes.size(), 9u);
+    EXPECT_EQ(primitiveCount(scene), 9u);
+    EXPECT_EQ(scene.materials.size(), 6u);
+    EXPECT_EQ(scene.images.size(), 4u);
+    EXPECT_EQ(scene.samplers.size(), 1u);
+    EXPECT_EQ(scene.roots, (std::vector<int>{3, 1, 2, 6, 7, 5, 4, 8, 0}));
+    const auto& mats = scene.materials;
+    EXPECT_EQ(mats[0].name, "MatBed");
+    EXPECT_EQ(mats[0].alphaMode, AlphaMode::Opaque);
+    EXPECT_FALSE(mats[0].doubleSided);
+    EXPECT_EQ(mats[1].alphaMode, AlphaMode::Blend);
+    EXPECT_TRUE(mats[1].doubleSided);
+    EXPECT_FLOAT_EQ(mats[1].metallicFactor, 0.0f);
+    EXPECT_FLOAT_EQ(mats[1].roughnessFactor, 0.8f);
+    EXPECT_EQ(mats[2].alphaMode, AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(mats[2].alphaCutoff, 0.25f);
+    EXPECT_FLOAT_EQ(mats[3].alphaCutoff, 0.75f);
+    EXPECT_EQ(mats[4].alphaMode, AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(mats[4].alphaCutoff, 0.5f); // the default
+    EXPECT_EQ(mats[5].alphaMode, AlphaMode::Opaque);
+    // Five of the eight textures share image 3.
+    EXPECT_EQ(mats[1].baseColorTexture.image, 3);
+    EXPECT_EQ(mats[5].baseColorTexture.image, 3);
+}
+
+TEST(GltfModels, TextureSettingsTestSamplers)
+{
+    const Scene scene = loadGltf(kModels / "TextureSettingsTest/TextureSettingsTest.glb");
+    EXPECT_EQ(scene.nodes.size(), 11u);
+    EXPECT_EQ(scene.meshes.size(), 10u);
+    EXPECT_EQ(primitiveCount(scene), 10u);
+    EXPECT_EQ(scene.materials.size(), 10u);
+    EXPECT_EQ(scene.images.size(), 3u);
+    ASSERT_EQ(scene.samplers.size(), 5u);
+    EXPECT_EQ(scene.roots, std::vector<int>{0});
+    EXPECT_EQ(scene.nodes[0].children.size(), 10u);
+    EXPECT_TRUE(scene.nodes[0].matrix.has_value());
+
+    // All five: magFilter LINEAR, minFilter NEAREST_MIPMAP_LINEAR.
+    for (const Sampler& s : scene.samplers) {
+        EXPECT_EQ(s.magFilter, Filter::Linear);
+        EXPECT_EQ(s.minFilter, Filter::Nearest);
+        EXPECT_TRUE(s.mipmaps);
+        EXPECT_TRUE(s.mipLinear);
+    }
+    EXPECT_EQ(scene.samplers[0].wrapS, Wrap::Repeat);
+    EXPECT_EQ(scene.samplers[0].wrapT, Wrap::Repeat);
+    EXPECT_EQ(scene.samplers[1].wrapT, Wrap::ClampToEdge);
+    EXPECT_EQ(scene.samplers[2].wrapS, Wrap::ClampToEdge);
+    EXPECT_EQ(scene.samplers[3].wrapS, Wrap::Repeat);
+    EXPECT_EQ(scene.samplers[3].wrapT, Wrap::MirroredRepeat);
+    EXPECT_EQ(scene.samplers[4].wrapS, Wrap::MirroredRepeat);
+
+    // Material 0 uses texture 0 = (sampler 3, image 0); material 1 texture 1 = (sampler 4, image 1).
+    EXPECT_EQ(scene.materials[0].baseColorTexture.sampler, 3);
+    EXPECT_EQ(scene.materials[0].baseColorTexture.image, 0);
+    EXPECT_EQ(scene.materials[1].baseColorTexture.sampler, 4);
+    EXPECT_EQ(scene.materials[1].baseColorTexture.image, 1);
+    EXPECT_FLOAT_EQ(scene.materials[0].roughnessFactor, 0.9f);
+    EXPECT_FALSE(scene.materials[4].baseColorTexture.valid());
+    EXPECT_NEAR(scene.materials[4].baseColorFactor.z, 0.64f, 1e-6f);
+    EXPECT_TRUE(scene.materials[7].doubleSided);
+    EXPECT_FALSE(scene.materials[8].doubleSided);
+}
+
+TEST(GltfModels, OrientationTest)
+{
+    const Scene scene = loadGltf(kModels / "OrientationTest/OrientationTest.glb");
+    EXPECT_EQ(scene.nodes.size(), 13u);
+    EXPECT_EQ(scene.meshes.size(), 13u);
+    EXPECT_EQ(primitiveCount(scene), 13u);
+    EXPECT_EQ(scene.materials.size(), 7u);
+    EXPECT_EQ(scene.images.size(), 0u);
+    EXPECT_EQ(scene.samplers.size(), 0u);
+    EXPECT_EQ(scene.roots.size(), 13u);
+    // ArrowX1: TRS; ArrowX2: a matrix whose translation is (-5, 0, 0).
+    EXPECT_EQ(scene.nodes[0].name, "ArrowX1");
+    EXPECT_FALSE(scene.nodes[0].matrix.has_value());
+    EXPECT_EQ(scene.nodes[0].translation, glm::vec3(5, 0, 0));
+    ASSERT_TRUE(scene.nodes[1].matrix.has_value());
+    EXPECT_FLOAT_EQ((*scene.nodes[1].matrix)[3][0], -5.0f);
+    EXPECT_NEAR((*scene.nodes[1].matrix)[1][2], 0.08715572783347625f, 1e-7f); // column 1, row 2
+    EXPECT_EQ(scene.meshInstances().size(), 13u);
+    EXPECT_EQ(scene.materials[1].name, "MatX1");
+    EXPECT_NEAR(scene.materials[1].metallicFactor, 0.4f, 1e-6f);
+    EXPECT_NEAR(scene.materials[1].roughnessFactor, 0.2f, 1e-6f);
+    EXPECT_EQ(scene.materials[0].metallicFactor, 1.0f); // absent: the default
+}
+
+TEST(GltfModels, BoxTexturedGltfWithExternalFiles)
+{
+    const Scene scene = loadGltf(kModels / "BoxTextured/BoxTextured.gltf");
+    EXPECT_EQ(scene.nodes.size(), 2u);
+    EXPECT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(primitiveCount(scene), 1u);
+    EXPECT_EQ(scene.materials.size(), 1u);
+    ASSERT_EQ(scene.images.size(), 1u);
+    EXPECT_EQ(scene.images[0].width, 256);
+    EXPECT_EQ(scene.images[0].height, 256);
+    ASSERT_EQ(scene.samplers.size(), 1u);
+    EXPECT_EQ(scene.samplers[0].minFilter, Filter::Nearest); // NEAREST_MIPMAP_LINEAR
+    EXPECT_TRUE(scene.samplers[0].mipmaps);
+    EXPECT_EQ(scene.roots, std::vector<int>{0});
+    EXPECT_EQ(scene.nodes[0].children, std::vector<int>{1});
+    EXPECT_EQ(scene.materials[0].metallicFactor, 0.0f);
+    const Primitive& p = scene.meshes[0].primitives[0];
+    EXPECT_EQ(p.vertices.size(), 24u);
+    EXPECT_EQ(p.indices.size(), 36u);
+    float maxU = 0.0f;
+    for (const Vertex& v : p.vertices) maxU = std::max(maxU, v.uv0.x);
+    EXPECT_FLOAT_EQ(maxU, 6.0f); // TEXCOORD_0 max
+    EXPECT_FALSE(p.hasTangents); // no normal map, so none needed
+}
+
+TEST(GltfModels, BoxGlb)
+{
+    const Scene scene = loadGltf(kModels / "Box/Box.glb");
+    EXPECT_EQ(scene.nodes.size(), 2u);
+    EXPECT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(primitiveCount(scene), 1u);
+    EXPECT_EQ(scene.materials.size(), 1u);
+    EXPECT_EQ(scene.images.size(), 0u);
+    EXPECT_EQ(scene.samplers.size(), 0u);
+    EXPECT_EQ(scene.materials[0].name, "Red");
+    EXPECT_NEAR(scene.materials[0].baseColorFactor.x, 0.8f, 1e-6f);
+    EXPECT_EQ(scene.materials[0].baseColorFactor.y, 0.0f);
+    const Primitive& p = scene.meshes[0].primitives[0];
+    EXPECT_EQ(p.vertices.size(), 24u);
+    EXPECT_EQ(p.indices.size(), 36u);
+    EXPECT_EQ(p.material, 0);
+    EXPECT_EQ(p.bounds.min, glm::vec3(-0.5f));
+    EXPECT_EQ(p.bounds.max, glm::vec3(0.5f));
+    EXPECT_EQ(scene.triangleCount(), 12u);
+}
+
+TEST(GltfModels, MultiUVTest)
+{
+    const Scene scene = loadGltf(kModels / "MultiUVTest/MultiUVTest.glb");
+    EXPECT_EQ(scene.nodes.size(), 3u);
+    EXPECT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(primitiveCount(scene), 1u);
+    EXPECT_EQ(scene.materials.size(), 1u);
+    EXPECT_EQ(scene.images.size(), 2u);
+    EXPECT_EQ(scene.samplers.size(), 1u);
+    EXPECT_EQ(scene.roots, (std::vector<int>{2, 1}));
+    const Material& m = scene.materials[0];
+    EXPECT_EQ(m.baseColorTexture.texCoord, 0);
+    EXPECT_EQ(m.emissiveTexture.texCoord, 1);
+    EXPECT_EQ(m.emissiveTexture.image, 1);
+    const Primitive& p = scene.meshes[0].primitives[0];
+    EXPECT_EQ(p.indices.size(), 36u); // unsigned byte indices
+    glm::vec2 maxUv1(0.0f);
+    for (const Vertex& v : p.vertices) maxUv1 = glm::max(maxUv1, v.uv1);
+    EXPECT_FLOAT_EQ(maxUv1.x, 0.25f);
+    EXPECT_FLOAT_EQ(maxUv1.y, 0.25f);
+
+    ASSERT_EQ(scene.cameras.size(), 1u);
+    const Camera& c = scene.cameras[0];
+    EXPECT_EQ(c.type, Camera::Type::Perspective);
+    EXPECT_FLOAT_EQ(c.yfov, 0.5033799372418416f);
+    EXPECT_FLOAT_EQ(c.aspectRatio, 1.7777777777777777f);
+    EXPECT_FLOAT_EQ(c.znear, 0.1f);
+    EXPECT_FLOAT_EQ(c.zfar, 100.0f);
+    EXPECT_EQ(scene.nodes[0].camera, 0);
+    EXPECT_EQ(scene.cameraInstances().size(), 1u);
+}
+
+TEST(GltfModels, TextureTransformTest)
+{
+    const Scene scene = loadGltf(kModels / "TextureTransformTest/TextureTransformTest.gltf");
+    EXPECT_EQ(scene.nodes.size(), 12u);
+    EXPECT_EQ(scene.meshes.size(), 9u);
+    EXPECT_EQ(primitiveCount(scene), 9u);
+    EXPECT_EQ(scene.materials.size(), 9u);
+    EXPECT_EQ(scene.images.size(), 5u);
+    ASSERT_EQ(scene.samplers.size(), 1u);
+    EXPECT_EQ(scene.roots, (std::vector<int>{0, 1, 2, 3, 7, 10}));
+    EXPECT_EQ(scene.samplers[0].wrapS, Wrap::ClampToEdge);
+    EXPECT_FALSE(scene.samplers[0].mipmaps); // minFilter LINEAR
+
+    const auto& mats = scene.materials;
+    EXPECT_EQ(mats[0].baseColorTexture.transform.offset, glm::vec2(0.5f, 0.0f));
+    EXPECT_TRUE(mats[0].baseColorTexture.transform.scale == glm::vec2(1.0f));
+    EXPECT_EQ(mats[1].baseColorTexture.transform.offset, glm::vec2(0.0f, 0.5f));
+    EXPECT_FLOAT_EQ(mats[3].baseColorTexture.transform.rotation, 0.39269908169872414f);
+    EXPECT_EQ(mats[4].baseColorTexture.transform.scale, glm::vec2(1.5f));
+    const UvTransform& all = mats[5].baseColorTexture.transform;
+    EXPECT_FLOAT_EQ(all.offset.x, -0.2f);
+    EXPECT_FLOAT_EQ(all.offset.y, -0.1f);
+    EXPECT_FLOAT_EQ(all.rotation, 0.3f);
+    EXPECT_EQ(all.scale, glm::vec2(1.5f));
+    EXPECT_TRUE(mats[6].baseColorTexture.transform.isIdentity());
+    EXPECT_EQ(mats[6].baseColorTexture.sampler, -1);
+    EXPECT_EQ(mats[0].baseColorTexture.sampler, 0);
+}
+
+TEST(GltfModels, VertexColorTest)
+{
+    const Scene scene = loadGltf(kModels / "VertexColorTest/VertexColorTest.glb");
+    EXPECT_EQ(scene.nodes.size(), 2u);
+    EXPECT_EQ(scene.meshes.size(), 2u);
+    EXPECT_EQ(primitiveCount(scene), 2u);
+    EXPECT_EQ(scene.materials.size(), 2u);
+    EXPECT_EQ(scene.images.size(), 2u);
+    EXPECT_EQ(scene.samplers.size(), 1u);
+    EXPECT_FALSE(scene.meshes[0].primitives[0].hasColors);
+    const Primitive& p = scene.meshes[1].primitives[0];
+    EXPECT_TRUE(p.hasColors);
+    EXPECT_EQ(p.vertices.size(), 48u);
+    // COLOR_0 (float VEC4) holds four pure red vertices, four green, four blue.
+    auto count = [&](glm::vec4 c) {
+        return std::count_if(p.vertices.begin(), p.vertices.end(), [&](const Vertex& v) { return v.color == c; });
+    };
+    EXPECT_EQ(count({1, 0, 0, 1}), 4);
+    EXPECT_EQ(count({0, 1, 0, 1}), 4);
+    EXPECT_EQ(count({0, 0, 1, 1}), 4);
+    EXPECT_EQ(count({1, 1, 1, 1}), 17);
+}
+
+TEST(GltfModels, ShadowsSpotLightsAndCamera)
+{
+    const Scene scene = loadGltf(kModels / "ShadowsSpot/shadows-spot.gltf");
+    EXPECT_EQ(scene.nodes.size(), 9u);
+    EXPECT_EQ(scene.meshes.size(), 5u);
+    EXPECT_EQ(scene.cameras.size(), 1u);
+    ASSERT_EQ(scene.lights.size(), 1u);
+    const Light& light = scene.lights[0];
+    EXPECT_EQ(light.type, Light::Type::Spot);
+    EXPECT_FLOAT_EQ(light.intensity, 1000.0f);
+    EXPECT_FLOAT_EQ(light.range, 25.0f);
+    EXPECT_FLOAT_EQ(light.innerConeAngle, 0.35342918277874724f);
+    EXPECT_FLOAT_EQ(light.outerConeAngle, 0.39269909262657166f);
+    EXPECT_EQ(scene.nodes[6].light, 0);
+    // "Light" at (0, 5, 0) with a child turned -90° about X: the spot points down.
+    const auto instances = scene.lightInstances();
+    ASSERT_EQ(instances.size(), 1u);
+    EXPECT_NEAR(glm::distance(instances[0].position, glm::vec3(0, 5, 0)), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::distance(instances[0].direction, glm::vec3(0, -1, 0)), 0.0f, 1e-5f);
+
+    const Scene sun = loadGltf(kModels / "ShadowsDirectional/shadows-directional.gltf");
+    ASSERT_EQ(sun.lights.size(), 1u);
+    EXPECT_EQ(sun.lights[0].type, Light::Type::Directional);
+    EXPECT_FLOAT_EQ(sun.lights[0].intensity, 10.0f);
+    EXPECT_EQ(sun.lights[0].range, 0.0f); // absent: infinite
+}
+
+TEST(GltfModels, UnusedDdsImagesAndRequiredMsftTextureDds)
+{
+    // BreakfastRoom's .dds images are reached only through MSFT_texture_dds: we cannot decode
+    // them, but nothing samples them either, so they are no reason for a warning.
+    const Scene room = loadGltf(kModels / "BreakfastRoom/BreakfastRoom.gltf");
+    EXPECT_EQ(room.nodes.size(), 34u);
+    EXPECT_EQ(room.meshes.size(), 14u);
+    EXPECT_EQ(primitiveCount(room), 16u);
+    EXPECT_EQ(room.materials.size(), 14u);
+    EXPECT_EQ(room.images.size(), 6u);
+    EXPECT_EQ(room.cameras.size(), 3u);
+    EXPECT_TRUE(room.warnings.empty());
+    // GasStation lists MSFT_texture_dds as required without using any texture.
+    const Scene station = loadGltf(kModels / "GasStation/GasStation.gltf");
+    EXPECT_EQ(station.nodes.size(), 2126u);
+    EXPECT_EQ(station.meshes.size(), 473u);
+    EXPECT_EQ(primitiveCount(station), 473u);
+    EXPECT_EQ(station.materials.size(), 95u);
+    EXPECT_EQ(station.cameras.size(), 2u);
+}
+
+TEST(GltfModels, DracoIsAnUnsupportedRequiredExtension)
+{
+    const auto path = kModels / "PmndrsBunny/bunny_draco.glb";
+    const std::string message = errorOf([&] { loadGltf(path); });
+    EXPECT_NE(message.find("bunny_draco.glb"), std::string::npos) << message;
+    EXPECT_NE(message.find("KHR_draco_mesh_compression"), std::string::npos) << message;
+}
+
+// --- broken files ----------------------------------------------------------------------------
+
+TEST(GltfErrors, MissingFile)
+{
+    TempDir dir;
+    const std::string message = errorOf([&] { loadGltf(dir / "nowhere.gltf"); });
+    EXPECT_NE(message.find("nowhere.gltf"), std::string::npos) << message;
+    EXPECT_NE(message.find("not found"), std::string::npos) << message;
+}
+
+TEST(GltfErrors, EmptyFile)
+{
+    TempDir dir;
+    writeFile(dir / "empty.glb", "");
+    const std::string message = errorOf([&] { loadGltf(dir / "empty.glb"); });
+    EXPECT_NE(message.find("empty.glb: "), std::string::npos) << message;
+    EXPECT_NE(message.find("empty"), std::string::npos) << message;
+}
+
+TEST(GltfErrors, NotJson)
+{
+    TempDir dir;
+    writeFile(dir / "text.gltf", "This is not glTF at all.\nSecond line.\n");
+    const std::string message = errorOf([&] { loadGltf(dir / "text.gltf"); });
+    EXPECT_NE(message.find("text.gltf: "), std::string::npos) << message;
+    EXPECT_NE(message.find("invalid JSON"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST(GltfErrors, JsonButNotGltf)
+{
+    TempDir dir;
+    writeFile(dir / "other.gltf", R"({"hello": [1, 2, 3]})");
+    const std::string message = errorOf([&] { loadGltf(dir / "other.gltf"); });
+    EXPECT_NE(message.find("other.gltf: "), std::string::npos) << message;
+    EXPECT_NE(message.find("asset"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST(GltfErrors, GlbExtensionWithoutMagic)
+{
+    TempDir dir;
+    writeFile(dir / "fake.glb", "{\"asset\": {\"version\": \"2.0\"}}");
+    const std::string message = errorOf([&] { loadGltf(dir / "fake.glb"); });
+    EXPECT_NE(message.find("fake.glb"), std::string::npos) << message;
+    EXPECT_NE(message.find("magic"), std::string::npos) << message;
+}
+
+TEST(GltfErrors, TruncatedGlb)
+{
+    TempDir dir;
+    const std::string box = readFile(kModels / "Box/Box.glb");
+    ASSERT_GT(box.size(), 100u);
+    writeFile(dir / "half.glb", box.substr(0, box.size() / 2));
+    std::string message = errorOf([&] { loadGltf(dir / "half.glb"); });
+    EXPECT_NE(message.find("half.glb"), std::string::npos) << message;
+    EXPECT_NE(message.find("truncated"), std::string::npos) << message;
+
+    // Cut inside the header, and with the header's length patched to match the cut.
+    writeFile(dir / "header.glb", box.substr(0, 10));
+    message = errorOf([&] { loadGltf(dir / "header.glb"); });
+    EXPECT_NE(message.find("truncated"), std::string::npos) << message;
+
+    std::string patched = box.substr(0, box.size() / 2);
+    const uint32_t length = uint32_t(patched.size());
+    std::memcpy(patched.data() + 8, &length, 4);
+    writeFile(dir / "patched.glb", patched);
+    message = errorOf([&] { loadGltf(dir / "patched.glb"); });
+    EXPECT_NE(message.find("patched.glb: truncated .glb: the JSON chunk"), std::string::npos) << message;
+}
+
+TEST(GltfErrors, GltfVersion1)
+{
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}});
+    b.doc["asset"]["version"] = "1.0";
+    const std::string message = errorOf([&] { loadGltf(b.write(dir, "old.gltf")); });
+    EXPECT_NE(message.find("old.gltf: glTF version 1.0 is not supported"), std::string::npos) << message;
+}
+
+TEST(GltfErrors, BadDataUriIsNotQuotedInFull)
+{
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(std::vector<float>(3000, 0.5f))}});
+    json doc = json::parse(readFile(b.write(dir, "uri.gltf")));
+    doc["buffers"][0]["byteLength"] = 12004; // the data URI holds 12000
+    writeFile(dir / "uri.gltf", doc.dump());
+    const std::string message = errorOf([&] { loadGltf(dir / "uri.gltf"); });
+    EXPECT_NE(message.find("uri.gltf: "), std::string::npos) << message;
+    EXPECT_NE(message.find("base64,..."), std::string::npos) << message;
+    EXPECT_LT(message.size(), 300u) << message;
+}
+
+TEST(GltfErrors, BufferViewOutOfRange)
+{
+    TempDir dir;
+    GltfBuilder b;
+    const int position = b.vec3(kTriangle);
+    b.primitive({{"POSITION", position}});
+    b.doc["accessors"][0]["bufferView"] = 99;
+    const auto path = b.write(dir, "badview.gltf");
+    const std::string message = errorOf([&] { loadGltf(path); });
+    EXPECT_NE(message.find("badview.gltf: "), std::string::npos) << message;
+    EXPECT_NE(message.find("bufferView 99"), std::string::npos) << message;
+    EXPECT_NE(message.find("out of range"), std::string::npos) << message;
+}
+
+TEST(GltfErrors, OtherIndicesOutOfRange)
+{
+    TempDir dir;
+    struct Case {
+        const char* name;
+        std::function<void(json&)> breakIt;
+        const char* phrase;
+    };
+    const Case cases[] = {
+        {"accessor", [](json& d) { d["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 7; }, "accessor 7"},
+        {"material", [](json& d) { d["meshes"][0]["primitives"][0]["material"] = 3; }, "material 3"},
+        {"mesh", [](json& d) { d["nodes"][0]["mesh"] = 5; }, "mesh 5"},
+        {"camera", [](json& d) { d["nodes"][0]["camera"] = 2; }, "camera 2"},
+        {"child", [](json& d) { d["nodes"][0]["children"] = json::array({4}); }, "node 4"},
+        {"scene", [](json& d) { d["scene"] = 3; }, "scene 3"},
+        {"scenenode", [](json& d) { d["scenes"][0]["nodes"] = json::array({9}); }, "node 9"},
+        {"light", [](json& d) { d["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 1; }, "light 1"},
+        {"texture",
+         [](json& d) {
+             d["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 2}}}}}}};
+         },
+         "texture 2"},
+        {"image",
+         [](json& d) {
+             d["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+             d["textures"] = {{{"source", 6}}};
+         },
+         "image 6"},
+        {"sampler",
+         [](json& d) {
+             d["materials"] = {{{"normalTexture", {{"index", 0}}}}};
+             d["images"] = {{{"uri", "a.png"}}};
+             d["textures"] = {{{"source", 0}, {"sampler", 4}}};
+         },
+         "sampler 4"},
+        {"buffer", [](json& d) { d["bufferViews"][0]["buffer"] = 2; }, "buffer 2"},
+    };
+    for (const Case& c : cases) {
+        GltfBuilder b;
+        b.primitive({{"POSITION", b.vec3(kTriangle)}});
+        c.breakIt(b.doc);
+        const auto path = b.write(dir, std::string(c.name) + ".gltf");
+        const std::string message = errorOf([&] { loadGltf(path); });
+        EXPECT_NE(message.find(std::string(c.name) + ".gltf: "), std::string::npos) << message;
+        EXPECT_NE(message.find(c.phrase), std::string::npos) << c.name << ": " << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+}
+
+TEST(GltfErrors, AccessorPastTheEndOfItsBuffer)
+{
+    TempDir dir;
+    GltfBuilder b;
+    const int position = b.vec3(kTriangle);
+    b.primitive({{"POSITION", position}});
+    b.doc["accessors"][0]["count"] = 4; // the view holds three
+    auto path = b.write(dir, "long.gltf");
+    std::string message = errorOf([&] { loadGltf(path); });
+    EXPECT_NE(message.find("long.gltf: "), std::string::npos) << message;
+    EXPECT_NE(message.find("past the end"), std::string::npos) << message;
+
+    b.doc["accessors"][0]["count"] = 3;
+    b.doc["accessors"][0]["byteOffset"] = 4;
+    path = b.write(dir, "offset.gltf");
+    message = errorOf([&] { loadGltf(path); });
+    EXPECT_NE(message.find("past the end"), std::string::npos) << message;
+
+    // A bufferView reaching past its buffer.
+    b.doc["accessors"][0]["byteOffset"] = 0;
+    b.doc["bufferViews"][0]["byteLength"] = 400;
+    path = b.write(dir, "view.gltf");
+    message = errorOf([&] { loadGltf(path); });
+    EXPECT_NE(message.find("view.gltf: "), std::string::npos) << message;
+    EXPECT_NE(message.find("past the end of buffer 0"), std::string::npos) << message;
+
+    // A stride smaller than an element.
+    b.doc["bufferViews"][0]["byteLength"] = 36;
+    b.doc["bufferViews"][0]["byteStride"] = 4;
+    path = b.write(dir, "stride.gltf");
+    message = errorOf([&] { loadGltf(path); });
+    EXPECT_NE(message.find("byteStride"), std::string::npos) << message;
+}
+
+TEST(GltfErrors, VertexIndexOutOfRange)
+{
+    TempDir dir;
+    GltfBuilder b;
+    const int position = b.vec3(kTriangle);
+    b.primitive({{"POSITION", position}}, 4, b.indices({0, 1, 3}));
+    const auto path = b.write(dir, "index.gltf");
+    const std::string message = errorOf([&] { loadGltf(path); });
+    EXPECT_NE(message.find("index.gltf: "), std::string::npos) << message;
+    EXPECT_NE(message.find("vertex 3"), std::string::npos) << message;
+}
+
+TEST(GltfErrors, AttributeCountMismatchAndWrongType)
+{
+    TempDir dir;
+    GltfBuilder b;
+    const int position = b.vec3(kTriangle);
+    b.primitive({{"POSITION", position}, {"NORMAL", b.vec3({0, 0, 1, 0, 0, 1})}});
+    auto path = b.write(dir, "count.gltf");
+    std::string message = errorOf([&] { loadGltf(path); });
+    EXPECT_NE(message.find("NORMAL has 2 elements but POSITION has 3"), std::string::npos) << message;
+
+    GltfBuilder c;
+    c.primitive({{"POSITION", c.vec2({0, 0, 1, 0, 0, 1})}});
+    path = c.write(dir, "vec2.gltf");
+    message = errorOf([&] { loadGltf(path); });
+    EXPECT_NE(message.find("POSITION must be VEC3"), std::string::npos) << message;
+}
+
+TEST(GltfErrors, MissingBin)
+{
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}});
+    const auto path = b.write(dir, "nobin.gltf", "missing.bin");
+    fs::remove(dir / "missing.bin");
+    const std::string message = errorOf([&] { loadGltf(path); });
+    EXPECT_NE(message.find("nobin.gltf: "), std::string::npos) << message;
+    EXPECT_NE(message.find("missing.bin"), std::string::npos) << message;
+    EXPECT_NE(message.find("not found"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+TEST(GltfErrors, UnsupportedRequiredExtension)
+{
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}});
+    b.doc["extensionsUsed"] = json::array({"EXT_made_up"});
+    b.doc["extensionsRequired"] = json::array({"EXT_made_up"});
+    const auto path = b.write(dir, "ext.gltf");
+    const std::string message = errorOf([&] { loadGltf(path); });
+    EXPECT_NE(message.find("ext.gltf: requires the unsupported extension EXT_made_up"), std::string::npos) << message;
+
+    // Required but supported ones load.
+    b.doc["extensionsUsed"] = json::array({"KHR_texture_transform", "KHR_mesh_quantization"});
+    b.doc["extensionsRequired"] = json::array({"KHR_texture_transform", "KHR_mesh_quantization"});
+    EXPECT_NO_THROW(loadGltf(b.write(dir, "ext2.gltf")));
+}
+
+TEST(GltfErrors, NodeCycles)
+{
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}});
+    b.doc["nodes"].push_back({{"children", json::array({2})}});
+    b.doc["nodes"].push_back({{"children", json::array({1})}});
+    std::string message = errorOf([&] { loadGltf(b.write(dir, "cycle.gltf")); });
+    EXPECT_NE(message.find("cycle.gltf: "), std::string::npos) << message;
+    EXPECT_NE(message.find("cycle"), std::string::npos) << message;
+
+    b.doc["nodes"][1]["children"] = json::array({1});
+    b.doc["nodes"][2]["children"] = json::array();
+    message = errorOf([&] { loadGltf(b.write(dir, "self.gltf")); });
+    EXPECT_NE(message.find("own child"), std::string::npos) << message;
+
+    b.doc["nodes"][1]["children"] = json::array({0});
+    b.doc["nodes"][2]["children"] = json::array({0});
+    message = errorOf([&] { loadGltf(b.write(dir, "twoparents.gltf")); });
+    EXPECT_NE(message.find("more than one parent"), std::string::npos) << message;
+}
+
+TEST(GltfErrors, MissingImageIsAWarning)
+{
+    TempDir dir;
+    GltfBuilder b;
+    auto& primitive = b.primitive({{"POSITION", b.vec3(kTriangle)}, {"TEXCOORD_0", b.vec2({0, 0, 1, 0, 0, 1})}});
+    primitive["material"] = 0;
+    b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    b.doc["textures"] = {{{"source", 0}}, {{"source", 1}}};
+    b.doc["images"] = {{{"uri", "missing.png"}}, {{"uri", "garbage.png"}}};
+    writeFile(dir / "garbage.png", "this is not a PNG");
+    const auto path = b.write(dir, "noimage.gltf");
+    Scene scene;
+    ASSERT_NO_THROW(scene = loadGltf(path));
+    ASSERT_EQ(scene.images.size(), 2u);
+    EXPECT_EQ(scene.images[0].width, 0);
+    EXPECT_TRUE(scene.images[0].pixels.empty());
+    EXPECT_EQ(scene.images[1].width, 0);
+    EXPECT_EQ(scene.materials[0].baseColorTexture.image, 0); // the renderer substitutes
+    ASSERT_EQ(scene.warnings.size(), 2u);
+    EXPECT_NE(scene.warnings[0].find("noimage.gltf"), std::string::npos) << scene.warnings[0];
+    EXPECT_NE(scene.warnings[0].find("missing.png"), std::string::npos) << scene.warnings[0];
+    EXPECT_NE(scene.warnings[1].find("garbage.png"), std::string::npos) << scene.warnings[1];
+    EXPECT_NE(scene.warnings[1].find("cannot decode"), std::string::npos) << scene.warnings[1];
+    for (const auto& warning : scene.warnings) EXPECT_EQ(warning.find('\n'), std::string::npos);
+}
+
+TEST(GltfErrors, RandomCorruptionNeverCrashes)
+{
+    // Flip bytes all over Box.glb: every result must be a scene or an Error, never a crash.
+    TempDir dir;
+    const std::string box = readFile(kModels / "Box/Box.glb");
+    std::mt19937 random(1234);
+    int errors = 0;
+    for (int round = 0; round < 200; ++round) {
+        std::string bytes = box;
+        const int flips = 1 + int(random() % 8);
+        for (int i = 0; i < flips; ++i) bytes[random() % bytes.size()] = char(random());
+        writeFile(dir / "fuzz.glb", bytes);
+        try {
+            loadGltf(dir / "fuzz.glb");
+        } catch (const Error& e) {
+            ++errors;
+            EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_GT(errors, 0);
+}
+
+// --- features on small files -----------------------------------------------------------------
+
+TEST(GltfFeatures, StripsFansAndSkippedPoints)
+{
+    TempDir dir;
+    GltfBuilder b;
+    // A strip of four vertices (two triangles) and a fan of five (three), both non-indexed.
+    b.primitive({{"POSITION", b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0})}}, 5);
+    b.primitive({{"POSITION", b.vec3({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, -1, 1, 0})}}, 6);
+    b.primitive({{"POSITION", b.vec3(kTriangle)}}, 0); // points
+    // An indexed strip with a degenerate stitch.
+    b.primitive({{"POSITION", b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0})}}, 5, b.indices({0, 1, 2, 2, 3}));
+    const Scene scene = loadGltf(b.write(dir, "modes.gltf"));
+    ASSERT_EQ(scene.meshes.size(), 4u);
+
+    // No NORMAL: flat normals, so the vertices are un-shared and the indices dropped.
+    const Primitive& strip = scene.meshes[0].primitives.at(0);
+    ASSERT_EQ(strip.vertices.size(), 6u);
+    EXPECT_TRUE(strip.indices.empty());
+    for (const Vertex& v : strip.vertices) EXPECT_EQ(v.normal, glm::vec3(0, 0, 1)); // both counter-clockwise
+    // Strip triangle 1 is (1, 3, 2): positions (1,0), (1,1), (0,1).
+    EXPECT_EQ(strip.vertices[3].position, glm::vec3(1, 0, 0));
+    EXPECT_EQ(strip.vertices[4].position, glm::vec3(1, 1, 0));
+    EXPECT_EQ(strip.vertices[5].position, glm::vec3(0, 1, 0));
+
+    const Primitive& fan = scene.meshes[1].primitives.at(0);
+    ASSERT_EQ(fan.vertices.size(), 9u);
+    for (const Vertex& v : fan.vertices) EXPECT_EQ(v.normal, glm::vec3(0, 0, 1));
+    EXPECT_EQ(fan.vertices[2].position, glm::vec3(0, 0, 0)); // (i+1, i+2, 0)
+
+    EXPECT_TRUE(scene.meshes[2].primitives.empty());
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("points"), std::string::npos) << scene.warnings[0];
+
+    // 0 1 2 2 3 gives (0,1,2), (1,2,2) dropped, (2,2,3) dropped: one triangle.
+    EXPECT_EQ(scene.meshes[3].primitives.at(0).vertices.size(), 3u);
+}
+
+TEST(GltfFeatures, QuantizedAttributesAndSparse)
+{
+    TempDir dir;
+    GltfBuilder b;
+    const int position = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0});
+    const int normal = b.vec3({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+    const int uv = b.data(std::vector<uint16_t>{0, 0, 65535, 0, 0, 65535, 65535, 65535}, kUShort, 2, "VEC2", true);
+    const int color =
+        b.data(std::vector<uint8_t>{255, 0, 0, 0, 255, 0, 0, 0, 255, 51, 51, 51}, kUByte, 3, "VEC3", true);
+    // uint32 indices
+    const int indices = b.data(std::vector<uint32_t>{0, 1, 2, 2, 1, 3}, kUInt, 1, "SCALAR");
+    b.primitive({{"POSITION", position}, {"NORMAL", normal}, {"TEXCOORD_1", uv}, {"COLOR_0", color}}, 4, indices);
+
+    // Sparse: vertex 3 of a copy of the positions moves to z = 2.
+    const std::vector<uint8_t> sparseIndex = {3};
+    const std::vector<float> sparseValue = {1, 1, 2};
+    const int indexView = b.view(sparseIndex.data(), sparseIndex.size());
+    const int valueView = b.view(sparseValue.data(), sparseValue.size() * 4);
+    b.doc["accessors"].push_back({{"bufferView", b.doc["accessors"][size_t(position)]["bufferView"]},
+                                  {"componentType", kFloat},
+                                  {"count", 4},
+                                  {"type", "VEC3"},
+                                  {"sparse",
+                                   {{"count", 1},
+                                    {"indices", {{"bufferView", indexView}, {"componentType", kUByte}}},
+                                    {"values", {{"bufferView", valueView}}}}}});
+    const int sparse = int(b.doc["accessors"].size() - 1);
+    b.primitive({{"POSITION", sparse}, {"NORMAL", normal}}, 4, indices);
+    // A sparse accessor without a bufferView: zeros, then the substitution.
+    json zeros = b.doc["accessors"][size_t(sparse)];
+    zeros.erase("bufferView");
+    b.doc["accessors"].push_back(zeros);
+    b.primitive({{"POSITION", int(b.doc["accessors"].size() - 1)}, {"NORMAL", normal}}, 4, indices);
+
+    const Scene scene = loadGltf(b.write(dir, "quantized.gltf"));
+    const Primitive& p = scene.meshes.at(0).primitives.at(0);
+    ASSERT_EQ(p.vertices.size(), 4u);
+    EXPECT_EQ(p.indices, (std::vector<uint32_t>{0, 1, 2, 2, 1, 3}));
+    EXPECT_EQ(p.vertices[3].uv1, glm::vec2(1.0f));
+    EXPECT_EQ(p.vertices[1].uv1, glm::vec2(1.0f, 0.0f));
+    EXPECT_EQ(p.vertices[0].uv0, glm::vec2(0.0f)); // absent
+    EXPECT_TRUE(p.hasColors);
+    EXPECT_EQ(p.vertices[0].color, glm::vec4(1, 0, 0, 1));
+    EXPECT_NEAR(p.vertices[3].color.y, 0.2f, 1e-6f);
+    EXPECT_EQ(p.vertices[3].color.w, 1.0f); // VEC3 colours are opaque
+
+    const Primitive& moved = scene.meshes.at(1).primitives.at(0);
+    EXPECT_EQ(moved.vertices[3].position, glm::vec3(1, 1, 2));
+    EXPECT_EQ(moved.vertices[2].position, glm::vec3(0, 1, 0));
+    EXPECT_EQ(moved.bounds.max, glm::vec3(1, 1, 2));
+    const Primitive& fromZeros = scene.meshes.at(2).primitives.at(0);
+    EXPECT_EQ(fromZeros.vertices[2].position, glm::vec3(0.0f));
+    EXPECT_EQ(fromZeros.vertices[3].position, glm::vec3(1, 1, 2));
+}
+
+TEST(GltfFeatures, MaterialExtensionsAndGeneratedTangents)
+{
+    TempDir dir;
+    GltfBuilder b;
+    // A quad facing +Z with u to the right and glTF v down: generated tangents are +X, w = +1.
+    const int position = b.vec3({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
+    const int normal = b.vec3({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+    const int uv = b.vec2({0, 1, 1, 1, 1, 0, 0, 0});
+    auto& p =
+        b.primitive({{"POSITION", position}, {"NORMAL", normal}, {"TEXCOORD_1", uv}}, 4, b.indices({0, 1, 2, 0, 2, 3}));
+    p["material"] = 0;
+    b.doc["materials"] = {{
+        {"emissiveFactor", {1, 0.5, 0.25}},
+        {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 40}}}}},
+        {"normalTexture",
+         {{"index", 0},
+          {"scale", 0.5},
+          {"extensions", {{"KHR_texture_transform", {{"texCoord", 1}, {"offset", {0.25, 0.5}}}}}}}},
+        {"occlusionTexture", {{"index", 0}, {"strength", 0.3}}},
+        {"emissiveTexture", {{"index", 0}, {"texCoord", 1}}},
+    }};
+    b.doc["textures"] = {{{"source", 0}}};
+    // A 16-bit PNG, embedded as a data URI: 2x1, red then 50% grey.
+    const auto png = makePng(2, 1, {65535, 0, 0, 32896, 32896, 32896}, true);
+    b.doc["images"] = {{{"uri", "data:image/png;base64," + base64(png)}}};
+    const Scene scene = loadGltf(b.write(dir, "material.gltf"));
+    EXPECT_TRUE(scene.warnings.empty());
+
+    const Material& m = scene.materials.at(0);
+    EXPECT_EQ(m.emissiveFactor, glm::vec3(1, 0.5, 0.25));
+    EXPECT_EQ(m.emissiveStrength, 40.0f);
+    EXPECT_EQ(m.normalScale, 0.5f);
+    EXPECT_FLOAT_EQ(m.occlusionStrength, 0.3f);
+    EXPECT_EQ(m.normalTexture.texCoord, 1); // KHR_texture_transform overrides texCoord 0
+    EXPECT_EQ(m.normalTexture.transform.offset, glm::vec2(0.25f, 0.5f));
+    EXPECT_EQ(m.normalTexture.sampler, -1);
+    EXPECT_EQ(m.emissiveTexture.texCoord, 1);
+    EXPECT_EQ(m.occlusionTexture.texCoord, 0);
+
+    const Image& image = scene.images.at(0);
+    ASSERT_EQ(image.width, 2);
+    ASSERT_EQ(image.height, 1);
+    EXPECT_EQ(image.pixels, (std::vector<uint8_t>{255, 0, 0, 255, 128, 128, 128, 255}));
+
+    // Tangents generated from TEXCOORD_1, the normal texture's set.
+    const Primitive& prim = scene.meshes.at(0).primitives.at(0);
+    ASSERT_TRUE(prim.hasTangents);
+    for (const Vertex& v : prim.vertices) {
+        EXPECT_NEAR(glm::distance(v.tangent, glm::vec4(1, 0, 0, 1)), 0.0f, 1e-5f);
+    }
+}
+
+TEST(GltfFeatures, CamerasLightsAndScenes)
+{
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}});
+    b.doc["cameras"] = {
+        {{"type", "orthographic"}, {"orthographic", {{"xmag", 2}, {"ymag", 1.5}, {"znear", 0.5}, {"zfar", 50}}}},
+        {{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.05}}}},
+    };
+    b.doc["extensionsUsed"] = json::array({"KHR_lights_punctual"});
+    b.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+        {{"type", "point"}, {"color", {1, 0.5, 0}}, {"intensity", 20}},
+        {{"type", "spot"}, {"spot", json::object()}},
+    };
+    b.doc["nodes"].push_back({{"camera", 0}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+    b.doc["nodes"].push_back({{"camera", 1}});
+    // No scenes at all: every parentless node is a root.
+    b.doc.erase("scenes");
+    const Scene scene = loadGltf(b.write(dir, "cameras.gltf"));
+
+    ASSERT_EQ(scene.cameras.size(), 2u);
+    EXPECT_EQ(scene.cameras[0].type, Camera::Type::Orthographic);
+    EXPECT_EQ(scene.cameras[0].xmag, 2.0f);
+    EXPECT_EQ(scene.cameras[0].ymag, 1.5f);
+    EXPECT_EQ(scene.cameras[0].znear, 0.5f);
+    EXPECT_EQ(scene.cameras[0].zfar, 50.0f);
+    EXPECT_EQ(scene.cameras[1].type, Camera::Type::Perspective);
+    EXPECT_FLOAT_EQ(scene.cameras[1].yfov, 0.8f);
+    EXPECT_EQ(scene.cameras[1].aspectRatio, 0.0f); // from the viewport
+    EXPECT_EQ(scene.cameras[1].zfar, 0.0f);        // infinite
+
+    ASSERT_EQ(scene.lights.size(), 2u);
+    EXPECT_EQ(scene.lights[0].type, Light::Type::Point);
+    EXPECT_EQ(scene.lights[0].color, glm::vec3(1, 0.5, 0));
+    EXPECT_EQ(scene.lights[0].intensity, 20.0f);
+    EXPECT_EQ(scene.lights[0].range, 0.0f);
+    EXPECT_EQ(scene.lights[1].type, Light::Type::Spot);
+    EXPECT_EQ(scene.lights[1].intensity, 1.0f);
+    EXPECT_EQ(scene.lights[1].innerConeAngle, 0.0f);
+    EXPECT_FLOAT_EQ(scene.lights[1].outerConeAngle, glm::quarter_pi<float>());
+    EXPECT_EQ(scene.nodes.at(1).light, 1);
+    EXPECT_EQ(scene.nodes.at(1).camera, 0);
+
+    EXPECT_EQ(scene.roots, (std::vector<int>{0, 1, 2}));
+    EXPECT_EQ(scene.cameraInstances().size(), 2u);
+    EXPECT_EQ(scene.lightInstances().size(), 1u);
+}
+
+TEST(GltfFeatures, DefaultSceneIsChosen)
+{
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}});
+    b.doc["nodes"].push_back(json::object());
+    b.doc["scenes"].push_back({{"nodes", json::array({1})}});
+    b.doc["scene"] = 1;
+    EXPECT_EQ(loadGltf(b.write(dir, "second.gltf")).roots, std::vector<int>{1});
+    b.doc.erase("scene");
+    EXPECT_EQ(loadGltf(b.write(dir, "first.gltf")).roots, std::vector<int>{0});
+}
