@@ -1,0 +1,47 @@
+#pragma once
+// Image files: 8-bit PNG for display-ready images, Radiance .hdr and OpenEXR for linear radiance.
+// Every function throws specula::Error with one line naming the file.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace specula {
+
+/// 8-bit RGBA, tightly packed, top row first.
+struct ImageRGBA8 {
+    int width = 0, height = 0;
+    std::vector<uint8_t> pixels;
+};
+
+/// Linear RGBA floats, tightly packed, top row first.
+struct ImageFloat {
+    int width = 0, height = 0;
+    std::vector<float> pixels;
+};
+
+// The writers replace the file atomically: they write a temporary file in the same directory
+// and rename it, so a failed or interrupted write never leaves a partial image behind.
+// Errors read "cannot write <path>: <reason>". `pixels` must hold width * height * 4 values.
+
+/// PNG, 8-bit RGBA.
+void writePng(const std::filesystem::path& path, const ImageRGBA8& image);
+/// Radiance RGBE (stb_image_write). Alpha is dropped; negative and NaN values are written as 0,
+/// which RGBE cannot represent.
+void writeHdr(const std::filesystem::path& path, const ImageFloat& image);
+/// OpenEXR, half-float RGBA, ZIP compression. Values beyond the half range are clamped to ±65504.
+void writeExr(const std::filesystem::path& path, const ImageFloat& image);
+
+/// Any 8-bit image stb_image decodes (PNG, JPEG, TGA, BMP...), expanded to RGBA.
+/// Errors read "cannot read <path>: <reason>" (missing, truncated, not an image).
+ImageRGBA8 readPng(const std::filesystem::path& path);
+/// A Radiance .hdr or an OpenEXR file (any compression, DWAA/DWAB included; half or float
+/// channels; recognised by content, not extension). Alpha is 1 where the file has none.
+/// Negative and NaN values (lossy EXR compression rings below zero around bright sources)
+/// become 0 so they cannot poison filtering; infinities become the largest half, 65504.
+ImageFloat readFloatImage(const std::filesystem::path& path);
+
+/// Checks an output path before long work: known extension (.png .hdr .exr, any case), the
+/// directory exists and a file can be created in it. Throws Error otherwise.
+void checkOutputPath(const std::filesystem::path& path);
+
+} // namespace specula

@@ -1,0 +1,394 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "core/Error.h"
+#include "core/ImageIO.h"
+
+namespace fs = std::filesystem;
+using namespace specula;
+
+namespace {
+
+const fs::path kAssets = SPECULA_ASSETS_DIR;
+
+/// A fresh directory under the system temp directory, removed with everything in it.
+class TempDir {
+public:
+    TempDir()
+    {
+        std::random_device random;
+        mPath = fs::temp_directory_path() / ("specula-image-io-" + std::to_string(random()));
+        fs::create_directories(mPath);
+    }
+    ~TempDir()
+    {
+        std::error_code ec;
+        fs::permissions(mPath, fs::perms::owner_all, fs::perm_options::add, ec);
+        fs::remove_all(mPath, ec);
+    }
+    const fs::path& path() const { return mPath; }
+    fs::path operator/(const std::string& name) const { return mPath / name; }
+    /// Names of the entries in the directory, hidden ones (the writers' temp files) included.
+    std::vector<std::string> entries() const
+    {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(mPath)) names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+
+private:
+    fs::path mPath;
+};
+
+/// The message of the Error `f` throws; fails the test if it throws nothing or something else.
+template <typename F>
+std::string errorOf(F&& f)
+{
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "not a specula::Error: " << e.what();
+        return {};
+    }
+    ADD_FAILURE() << "no error thrown";
+    return {};
+}
+
+std::vector<char> readBytes(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void writeBytes(const fs::path& path, const char* data, size_t size)
+{
+    std::ofstream out(path, std::ios::binary);
+    out.write(data, std::streamsize(size));
+}
+
+ImageRGBA8 testPattern8(int width, int height)
+{
+    ImageRGBA8 image{width, height, {}};
+    std::mt19937 random(7);
+    for (int i = 0; i < width * height * 4; ++i) image.pixels.push_back(uint8_t(random()));
+    return image;
+}
+
+/// Linear values over nine decades with random alpha, so the round trips see the exponent range.
+ImageFloat testPatternFloat(int width, int height)
+{
+    ImageFloat image{width, height, {}};
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> exponent(-4.0f, 4.5f);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int i = 0; i < width * height; ++i) {
+        for (int c = 0; c < 3; ++c) image.pixels.push_back(std::pow(10.0f, exponent(random)));
+        image.pixels.push_back(unit(random));
+    }
+    return image;
+}
+
+// Rec. 709 luminance, as the asset README's statistics use.
+double luminance(const float* rgb) { return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]; }
+
+void expectSaneEnvironment(const ImageFloat& image, int width, int height, double meanLuminance)
+{
+    ASSERT_EQ(image.width, width);
+    ASSERT_EQ(image.height, height);
+    ASSERT_EQ(image.pixels.size(), size_t(width) * size_t(height) * 4);
+    double sum = 0.0;
+    for (size_t i = 0; i < image.pixels.size(); i += 4) {
+        for (int c = 0; c < 4; ++c) {
+            ASSERT_TRUE(std::isfinite(image.pixels[i + c])) << "pixel " << i / 4;
+            ASSERT_GE(image.pixels[i + c], 0.0f) << "pixel " << i / 4;
+        }
+        ASSERT_EQ(image.pixels[i + 3], 1.0f) << "files without alpha read as opaque";
+        sum += luminance(&image.pixels[i]);
+    }
+    // Means from the assets README (unweighted by solid angle). Clamping the few negative
+    // DWAB pixels to zero raises an EXR's mean slightly, hence 5%.
+    EXPECT_NEAR(sum / double(width * height), meanLuminance, 0.05 * meanLuminance);
+}
+
+} // namespace
+
+TEST(ImageIo, PngRoundTripIsExact)
+{
+    TempDir dir;
+    const ImageRGBA8 image = testPattern8(37, 23);
+    writePng(dir / "a.png", image);
+    const ImageRGBA8 back = readPng(dir / "a.png");
+    EXPECT_EQ(back.width, 37);
+    EXPECT_EQ(back.height, 23);
+    EXPECT_EQ(back.pixels, image.pixels);
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"a.png"});
+}
+
+TEST(ImageIo, HdrRoundTripWithinRgbePrecision)
+{
+    TempDir dir;
+    ImageFloat image = testPatternFloat(41, 19);
+    image.pixels[0] = -2.0f; // RGBE cannot store negatives: written as 0
+    writeHdr(dir / "a.hdr", image);
+    const ImageFloat back = readFloatImage(dir / "a.hdr");
+    ASSERT_EQ(back.width, 41);
+    ASSERT_EQ(back.height, 19);
+    ASSERT_EQ(back.pixels.size(), image.pixels.size());
+    EXPECT_EQ(back.pixels[0], 0.0f);
+    image.pixels[0] = 0.0f;
+    for (size_t i = 0; i < image.pixels.size(); i += 4) {
+        // RGBE: an 8-bit mantissa per channel under the largest channel's exponent, truncated
+        // when written, so each channel is off by less than max(r, g, b) / 128.
+        const float maxChannel = std::max({image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]});
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(back.pixels[i + c], image.pixels[i + c], maxChannel / 128.0f) << "pixel " << i / 4;
+        EXPECT_EQ(back.pixels[i + 3], 1.0f) << "alpha is not stored";
+    }
+}
+
+TEST(ImageIo, ExrRoundTripWithinHalfPrecision)
+{
+    TempDir dir;
+    ImageFloat image = testPatternFloat(33, 17);
+    image.pixels[0] = 1.0e6f; // beyond the half range: clamped to the largest half
+    writeExr(dir / "a.exr", image);
+    const ImageFloat back = readFloatImage(dir / "a.exr");
+    ASSERT_EQ(back.width, 33);
+    ASSERT_EQ(back.height, 17);
+    ASSERT_EQ(back.pixels.size(), image.pixels.size());
+    EXPECT_EQ(back.pixels[0], 65504.0f);
+    for (size_t i = 1; i < image.pixels.size(); ++i) {
+        // Half floats round to nearest with an 11-bit significand: relative error ≤ 2^-11 for
+        // normal numbers (all values here are ≥ 1e-4 > 2^-14, the smallest normal half).
+        const float expected = image.pixels[i];
+        EXPECT_NEAR(back.pixels[i], expected, std::ldexp(expected, -11)) << "value " << i;
+    }
+}
+
+TEST(ImageIo, WritesReplaceExistingFiles)
+{
+    TempDir dir;
+    writePng(dir / "a.png", testPattern8(4, 4));
+    const ImageRGBA8 second = testPattern8(8, 2);
+    writePng(dir / "a.png", second);
+    EXPECT_EQ(readPng(dir / "a.png").pixels, second.pixels);
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"a.png"});
+}
+
+TEST(ImageIo, UnknownExtension)
+{
+    TempDir dir;
+    const fs::path path = dir / "x.jpg";
+    const std::string expected = "cannot write " + path.string() + ": unknown image format (use .png, .hdr or .exr)";
+    EXPECT_EQ(errorOf([&] { writePng(path, testPattern8(2, 2)); }), expected);
+    EXPECT_EQ(errorOf([&] { writeExr(path, testPatternFloat(2, 2)); }), expected);
+    EXPECT_EQ(errorOf([&] { checkOutputPath(path); }), expected);
+    EXPECT_EQ(errorOf([&] { checkOutputPath(dir / "noextension"); }),
+              "cannot write " + (dir / "noextension").string() + ": unknown image format (use .png, .hdr or .exr)");
+    EXPECT_EQ(errorOf([&] { writeHdr(dir / "x.exr", testPatternFloat(2, 2)); }),
+              "cannot write " + (dir / "x.exr").string() + ": this writer writes .hdr files");
+    EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(ImageIo, EmptyImageIsAnError)
+{
+    TempDir dir;
+    EXPECT_EQ(errorOf([&] { writePng(dir / "a.png", ImageRGBA8{}); }),
+              "cannot write " + (dir / "a.png").string() + ": the image is empty (0x0)");
+    EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(ImageIo, UnwritableDirectory)
+{
+    TempDir dir;
+    fs::path locked = dir / "locked";
+    fs::create_directory(locked);
+    fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec);
+    if (geteuid() == 0) {
+        // Root ignores permission bits; sysfs refuses new files even to root.
+        if (!fs::is_directory("/sys/kernel")) GTEST_SKIP() << "running as root without /sys";
+        locked = "/sys/kernel";
+    }
+    for (const char* name : {"x.png", "x.hdr", "x.exr"}) {
+        const fs::path path = locked / name;
+        const std::string expected = "cannot write " + path.string() + ": Permission denied";
+        EXPECT_EQ(errorOf([&] { checkOutputPath(path); }), expected);
+        const std::string error = errorOf([&] {
+            if (path.extension() == ".png") writePng(path, testPattern8(2, 2));
+            if (path.extension() == ".hdr") writeHdr(path, testPatternFloat(2, 2));
+            if (path.extension() == ".exr") writeExr(path, testPatternFloat(2, 2));
+        });
+        EXPECT_EQ(error, expected);
+        EXPECT_FALSE(fs::exists(path));
+    }
+    if (locked.string().starts_with(dir.path().string())) {
+        EXPECT_TRUE(fs::is_empty(locked));
+    }
+}
+
+TEST(ImageIo, MissingDirectory)
+{
+    TempDir dir;
+    const fs::path path = dir / "nope" / "x.png";
+    EXPECT_EQ(errorOf([&] { checkOutputPath(path); }),
+              "cannot write " + path.string() + ": directory " + (dir / "nope").string() + " does not exist");
+    EXPECT_EQ(errorOf([&] { writePng(path, testPattern8(2, 2)); }),
+              "cannot write " + path.string() + ": No such file or directory");
+}
+
+TEST(ImageIo, NoTempFileLeftAfterFailure)
+{
+    // The destination is a directory: the temp file is written completely, then the rename
+    // fails, and the temp file must go.
+    TempDir dir;
+    for (const char* name : {"d.png", "d.hdr", "d.exr"}) fs::create_directory(dir / name);
+    const std::string prefix = "cannot write " + dir.path().string();
+    EXPECT_EQ(errorOf([&] { writePng(dir / "d.png", testPattern8(16, 16)); }), prefix + "/d.png: Is a directory");
+    EXPECT_EQ(errorOf([&] { writeHdr(dir / "d.hdr", testPatternFloat(16, 16)); }), prefix + "/d.hdr: Is a directory");
+    EXPECT_EQ(errorOf([&] { writeExr(dir / "d.exr", testPatternFloat(16, 16)); }), prefix + "/d.exr: Is a directory");
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"d.exr", "d.hdr", "d.png"}));
+    for (const char* name : {"d.png", "d.hdr", "d.exr"}) EXPECT_TRUE(fs::is_empty(dir / name));
+}
+
+TEST(ImageIo, CheckOutputPathAcceptsWritableTargets)
+{
+    TempDir dir;
+    EXPECT_NO_THROW(checkOutputPath(dir / "a.png"));
+    EXPECT_NO_THROW(checkOutputPath(dir / "b.HDR"));
+    EXPECT_NO_THROW(checkOutputPath(dir / "c.exr"));
+    EXPECT_TRUE(dir.entries().empty()) << "the probe file must not stay";
+    fs::create_directory(dir / "sub.png");
+    EXPECT_EQ(errorOf([&] { checkOutputPath(dir / "sub.png"); }),
+              "cannot write " + (dir / "sub.png").string() + ": is a directory");
+}
+
+TEST(ImageIo, ReadErrors)
+{
+    TempDir dir;
+    const fs::path missing = dir / "missing.png";
+    EXPECT_EQ(errorOf([&] { readPng(missing); }), "cannot read " + missing.string() + ": No such file or directory");
+    EXPECT_EQ(errorOf([&] { readFloatImage(dir / "missing.exr"); }),
+              "cannot read " + (dir / "missing.exr").string() + ": No such file or directory");
+
+    const fs::path text = dir / "text.png";
+    writeBytes(text, "hello, world\n", 13);
+    EXPECT_TRUE(errorOf([&] { readPng(text); }).starts_with("cannot read " + text.string() + ": not a readable image"));
+    EXPECT_EQ(errorOf([&] { readFloatImage(text); }),
+              "cannot read " + text.string() + ": not a Radiance .hdr or OpenEXR image");
+
+    // An 8-bit image is not a float image, whatever its name.
+    writePng(dir / "a.png", testPattern8(2, 2));
+    fs::rename(dir / "a.png", dir / "a.hdr");
+    EXPECT_EQ(errorOf([&] { readFloatImage(dir / "a.hdr"); }),
+              "cannot read " + (dir / "a.hdr").string() + ": not a Radiance .hdr or OpenEXR image");
+
+    EXPECT_EQ(errorOf([&] { readPng(dir.path()); }), "cannot read " + dir.path().string() + ": is a directory");
+}
+
+TEST(ImageIo, TruncatedPngIsAnError)
+{
+    TempDir dir;
+    writePng(dir / "a.png", testPattern8(64, 64));
+    const std::vector<char> bytes = readBytes(dir / "a.png");
+    for (size_t size : {size_t(0), size_t(8), size_t(40), bytes.size() / 2, bytes.size() - 1}) {
+        writeBytes(dir / "t.png", bytes.data(), size);
+        EXPECT_TRUE(errorOf([&] { readPng(dir / "t.png"); }).starts_with("cannot read " + (dir / "t.png").string() + ": "))
+            << "truncated to " << size << " bytes";
+    }
+}
+
+TEST(ImageIo, TruncatedHdrIsAnError)
+{
+    TempDir dir;
+    const std::vector<char> bytes = readBytes(kAssets / "env" / "studio_1k.hdr");
+    ASSERT_GT(bytes.size(), 100000u);
+    // Cut inside the header, inside a scanline, and where stb_image would not notice by itself.
+    const fs::path path = dir / "t.hdr";
+    writeBytes(path, bytes.data(), 5);
+    EXPECT_EQ(errorOf([&] { readFloatImage(path); }),
+              "cannot read " + path.string() + ": not a Radiance .hdr or OpenEXR image");
+    for (size_t size : {size_t(70), size_t(200), bytes.size() / 3, bytes.size() / 2, bytes.size() - 1}) {
+        writeBytes(path, bytes.data(), size);
+        EXPECT_EQ(errorOf([&] { readFloatImage(path); }), "cannot read " + path.string() + ": the file is truncated")
+            << "truncated to " << size << " bytes";
+    }
+}
+
+TEST(ImageIo, CorruptHdrIsAnError)
+{
+    // A zero run length, which makes Debian's stb_image loop forever.
+    TempDir dir;
+    std::vector<char> bytes = readBytes(kAssets / "env" / "studio_1k.hdr");
+    const std::string resolution = "-Y 512 +X 1024\n";
+    const auto at = std::search(bytes.begin(), bytes.end(), resolution.begin(), resolution.end());
+    ASSERT_NE(at, bytes.end());
+    const size_t firstCount = size_t(at - bytes.begin()) + resolution.size() + 4; // after the scanline header
+    bytes[firstCount] = 0;
+    writeBytes(dir / "c.hdr", bytes.data(), bytes.size());
+    EXPECT_EQ(errorOf([&] { readFloatImage(dir / "c.hdr"); }),
+              "cannot read " + (dir / "c.hdr").string() + ": corrupt run-length data");
+}
+
+TEST(ImageIo, TruncatedExrIsAnError)
+{
+    TempDir dir;
+    const std::vector<char> bytes = readBytes(kAssets / "env" / "studio.exr");
+    ASSERT_GT(bytes.size(), 10000u);
+    const fs::path path = dir / "t.exr";
+    const std::string expected = "cannot read " + path.string() + ": the file is truncated";
+    for (size_t size : {size_t(4), size_t(100), size_t(400), bytes.size() / 3, bytes.size() / 2, bytes.size() - 1}) {
+        writeBytes(path, bytes.data(), size);
+        EXPECT_EQ(errorOf([&] { readFloatImage(path); }), expected) << "truncated to " << size << " bytes";
+    }
+    // Our own ZIP-compressed files too.
+    writeExr(dir / "a.exr", testPatternFloat(64, 64));
+    const std::vector<char> ours = readBytes(dir / "a.exr");
+    writeBytes(path, ours.data(), ours.size() - 10);
+    EXPECT_EQ(errorOf([&] { readFloatImage(path); }), expected);
+}
+
+TEST(ImageIo, ReadsDwabExrEnvironments)
+{
+    // The assets' EXRs are 512x256 half RGB with lossy DWAB compression (see the assets README).
+    const std::pair<const char*, double> files[] = {
+        {"bridge", 1.296}, {"city", 0.682}, {"studio", 1.849}, {"venice", 0.595}};
+    for (const auto& [name, mean] : files) {
+        SCOPED_TRACE(name);
+        expectSaneEnvironment(readFloatImage(kAssets / "env" / (std::string(name) + ".exr")), 512, 256, mean);
+    }
+}
+
+TEST(ImageIo, ReadsRadianceEnvironments)
+{
+    const std::pair<const char*, double> files[] = {{"bridge", 1.304}, {"city", 0.682}, {"lobby", 0.730},
+                                                    {"park", 0.524},   {"sky", 0.674},  {"studio", 1.848},
+                                                    {"sunset", 0.408}, {"venice", 0.596}};
+    for (const auto& [name, mean] : files) {
+        SCOPED_TRACE(name);
+        expectSaneEnvironment(readFloatImage(kAssets / "env" / (std::string(name) + "_1k.hdr")), 1024, 512, mean);
+    }
+}
+
+TEST(ImageIo, ReadsModelTextures)
+{
+    // Real PNG and JPEG files: the truncation check must not reject complete files.
+    for (const char* file : {"BoxTextured/CesiumLogoFlat.png", "BreakfastRoom/marble.jpg", "BreakfastRoom/picture3.jpg"}) {
+        SCOPED_TRACE(file);
+        const ImageRGBA8 image = readPng(kAssets / "models" / file);
+        EXPECT_GT(image.width, 0);
+        EXPECT_GT(image.height, 0);
+        EXPECT_EQ(image.pixels.size(), size_t(image.width) * size_t(image.height) * 4);
+    }
+}
