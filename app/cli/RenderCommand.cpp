@@ -1,3 +1,4 @@
+#include <cctype>
 #include <filesystem>
 
 #include "Commands.h"
@@ -31,7 +32,8 @@ int runRender(const RenderArgs& args)
     renderer.setScene(document.scene);
     renderer.render(view, settings);
 
-    const std::string extension = output.extension().string();
+    std::string extension = output.extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
     if (extension == ".png") {
         writePng(output, renderer.readImage());
     } else if (extension == ".hdr") {

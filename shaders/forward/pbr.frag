@@ -1,6 +1,9 @@
 #version 450 core
 // Forward pass: glTF metal-rough material lit by punctual lights. This file only
 // orchestrates; the BRDF lives in brdf/, light falloff in lights/.
+// Material features are compile-time variants (see Renderer's variant key): HAS_*_TEXTURE,
+// VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND, DOUBLE_SIDED. A material without a feature pays
+// nothing for it; without ALPHA_MASK there is no discard, so early depth testing stays on.
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
 #include "../shared/MaterialData.h"
@@ -40,51 +43,63 @@ const uint TEX_NORMAL = 2u;
 const uint TEX_OCCLUSION = 3u;
 const uint TEX_EMISSIVE = 4u;
 
-vec2 textureUv(GpuMaterial m, uint texture)
+// Texture coordinates of one texture: its uv set and KHR_texture_transform.
+vec2 textureUv(uint texture)
 {
-    uint set = (m.flags.y >> (2u * texture)) & 3u;
+    uint set = (materials[uMaterial].flags.y >> (2u * texture)) & 3u;
     vec3 uv = vec3(set == 1u ? vUv1 : vUv0, 1.0);
-    return vec2(dot(m.uvTransform[2u * texture].xyz, uv), dot(m.uvTransform[2u * texture + 1u].xyz, uv));
+    return vec2(dot(materials[uMaterial].uvTransform[2u * texture].xyz, uv),
+                dot(materials[uMaterial].uvTransform[2u * texture + 1u].xyz, uv));
 }
 
 void main()
 {
-    GpuMaterial m = materials[uMaterial];
-    uint flags = m.flags.x;
+    vec4 baseColor = materials[uMaterial].baseColorFactor;
+#if defined(HAS_BASE_COLOR_TEXTURE)
+    baseColor *= texture(uBaseColorTexture, textureUv(TEX_BASE_COLOR)); // sRGB texture: decoded by GL
+#endif
+#if defined(VERTEX_COLOR)
+    baseColor *= vColor;
+#endif
+#if defined(ALPHA_MASK)
+    if (baseColor.a < materials[uMaterial].alpha.x) discard;
+#endif
+#if defined(ALPHA_BLEND)
+    float alpha = baseColor.a;
+#else
+    float alpha = 1.0;
+#endif
 
-    vec4 baseColor = m.baseColorFactor;
-    if ((flags & SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE) != 0u)
-        baseColor *= texture(uBaseColorTexture, textureUv(m, TEX_BASE_COLOR)); // sRGB texture: decoded by GL
-    if ((flags & SPECULA_MATERIAL_USE_VERTEX_COLOR) != 0u) baseColor *= vColor;
-
-    if ((flags & SPECULA_MATERIAL_ALPHA_MASK) != 0u && baseColor.a < m.alpha.x) discard;
-    float alpha = (flags & SPECULA_MATERIAL_ALPHA_BLEND) != 0u ? baseColor.a : 1.0;
-
-    float metallic = m.params.x;
-    float perceptualRoughness = m.params.y;
-    if ((flags & SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE) != 0u) {
-        vec4 mr = texture(uMetallicRoughnessTexture, textureUv(m, TEX_METALLIC_ROUGHNESS));
-        perceptualRoughness *= mr.g;
-        metallic *= mr.b;
-    }
+    vec4 params = materials[uMaterial].params;
+    float metallic = params.x;
+    float perceptualRoughness = params.y;
+#if defined(HAS_METALLIC_ROUGHNESS_TEXTURE)
+    vec4 mr = texture(uMetallicRoughnessTexture, textureUv(TEX_METALLIC_ROUGHNESS));
+    perceptualRoughness *= mr.g;
+    metallic *= mr.b;
+#endif
     metallic = saturate(metallic);
     perceptualRoughness = clamp(perceptualRoughness, kMinPerceptualRoughness, 1.0);
 
-    // Geometric normal; back faces of double-sided materials are lit from their own side.
     vec3 n = normalize(vNormal);
-    bool flip = !gl_FrontFacing && (flags & SPECULA_MATERIAL_DOUBLE_SIDED) != 0u;
+#if defined(DOUBLE_SIDED)
+    // Back faces of double-sided materials are lit from their own side.
+    bool flip = !gl_FrontFacing;
     if (flip) n = -n;
-    if ((flags & SPECULA_MATERIAL_HAS_NORMAL_TEXTURE) != 0u) {
-        vec3 t = vTangent.xyz - n * dot(n, vTangent.xyz);
-        // A zero tangent (degenerate uv) would give NaN: fall back to the geometric normal.
-        if (dot(t, t) > 1e-12) {
-            t = normalize(flip ? -t : t);
-            vec3 b = cross(n, t) * (vTangent.w < 0.0 ? -1.0 : 1.0);
-            vec3 tn = texture(uNormalTexture, textureUv(m, TEX_NORMAL)).xyz * 2.0 - 1.0;
-            tn.xy *= m.params.z;
-            n = normalize(mat3(t, b, n) * tn);
-        }
+#else
+    const bool flip = false;
+#endif
+#if defined(HAS_NORMAL_TEXTURE)
+    vec3 t = vTangent.xyz - n * dot(n, vTangent.xyz);
+    // A zero tangent (degenerate uv) would give NaN: fall back to the geometric normal.
+    if (dot(t, t) > 1e-12) {
+        t = normalize(flip ? -t : t);
+        vec3 b = cross(n, t) * (vTangent.w < 0.0 ? -1.0 : 1.0);
+        vec3 tn = texture(uNormalTexture, textureUv(TEX_NORMAL)).xyz * 2.0 - 1.0;
+        tn.xy *= params.z;
+        n = normalize(mat3(t, b, n) * tn);
     }
+#endif
 
     vec3 v = normalize(frame.cameraPosition.xyz - vWorldPosition);
     SurfaceBrdf surface = makeSurfaceBrdf(baseColor.rgb, metallic, perceptualRoughness);
@@ -100,14 +115,16 @@ void main()
     }
 
     float occlusion = 1.0;
-    if ((flags & SPECULA_MATERIAL_HAS_OCCLUSION_TEXTURE) != 0u)
-        occlusion = 1.0 + m.params.w * (texture(uOcclusionTexture, textureUv(m, TEX_OCCLUSION)).r - 1.0);
+#if defined(HAS_OCCLUSION_TEXTURE)
+    occlusion = 1.0 + params.w * (texture(uOcclusionTexture, textureUv(TEX_OCCLUSION)).r - 1.0);
+#endif
     // Constant ambient (non-physical, 0 unless a scene asks): lights the diffuse part only.
     color += frame.ambient.rgb * surface.diffuseColor * occlusion;
 
-    vec3 emissive = m.emissive.rgb;
-    if ((flags & SPECULA_MATERIAL_HAS_EMISSIVE_TEXTURE) != 0u)
-        emissive *= texture(uEmissiveTexture, textureUv(m, TEX_EMISSIVE)).rgb;
+    vec3 emissive = materials[uMaterial].emissive.rgb;
+#if defined(HAS_EMISSIVE_TEXTURE)
+    emissive *= texture(uEmissiveTexture, textureUv(TEX_EMISSIVE)).rgb;
+#endif
     color += emissive;
 
     outColor = vec4(min(color, vec3(kHalfMax)), alpha);

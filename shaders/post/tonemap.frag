@@ -1,18 +1,36 @@
 #version 450 core
-// Exposure, tone mapping and sRGB encoding: the last pass, into an 8-bit target.
+// Exposure and tone mapping: the last pass, into an 8-bit sRGB target (GL encodes with
+// GL_FRAMEBUFFER_SRGB, the exact IEC 61966-2-1 curve). With MSAA_SAMPLES defined it also
+// resolves: the box average of the linear HDR samples, the same as a blit resolve.
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
 #include "../common/color.glsl"
 #include "tonemap.glsl"
 
 layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
+#if defined(MSAA_SAMPLES)
+layout(binding = SPECULA_UNIT_POST_INPUT) uniform sampler2DMS uInput;
+
+vec3 fetchRadiance(ivec2 p)
+{
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < MSAA_SAMPLES; ++i) sum += texelFetch(uInput, p, i).rgb;
+    return sum * (1.0 / float(MSAA_SAMPLES));
+}
+#else
 layout(binding = SPECULA_UNIT_POST_INPUT) uniform sampler2D uInput;
+
+vec3 fetchRadiance(ivec2 p)
+{
+    return texelFetch(uInput, p, 0).rgb;
+}
+#endif
 
 layout(location = 0) out vec4 outColor;
 
 void main()
 {
-    vec3 hdr = texelFetch(uInput, ivec2(gl_FragCoord.xy), 0).rgb * frame.exposure.x;
+    vec3 hdr = fetchRadiance(ivec2(gl_FragCoord.xy)) * frame.exposure.x;
     vec3 mapped = tonemap(max(hdr, vec3(0.0)), frame.options.x, frame.exposure.y);
-    outColor = vec4(linearToSrgb(clamp(mapped, 0.0, 1.0)), 1.0);
+    outColor = vec4(clamp(mapped, 0.0, 1.0), 1.0);
 }

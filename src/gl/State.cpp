@@ -41,6 +41,12 @@ void State::drawTriangles(uint32_t count, bool indexed)
     ++mDrawCalls;
 }
 
+void State::drawTrianglesInstanced(uint32_t count, uint32_t instances)
+{
+    glDrawArraysInstanced(GL_TRIANGLES, 0, GLsizei(count), GLsizei(instances));
+    ++mDrawCalls;
+}
+
 void State::useProgram(const Program& program)
 {
     if (mProgram != program.id()) {
@@ -130,6 +136,8 @@ void State::apply(const PipelineDesc& p)
             break;
         }
     }
+    if (first || p.framebufferSrgb != mPipeline.framebufferSrgb)
+        p.framebufferSrgb ? glEnable(GL_FRAMEBUFFER_SRGB) : glDisable(GL_FRAMEBUFFER_SRGB);
     if (first || p.frontFaceClockwise != mPipeline.frontFaceClockwise) glFrontFace(p.frontFaceClockwise ? GL_CW : GL_CCW);
     mPipeline = p;
     mPipelineKnown = true;

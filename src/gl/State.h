@@ -25,6 +25,7 @@ struct PipelineDesc {
     CullMode cull = CullMode::None;
     BlendMode blend = BlendMode::None;
     bool frontFaceClockwise = false; ///< for mirrored (negative determinant) transforms
+    bool framebufferSrgb = false;    ///< encode to sRGB when writing sRGB targets
     bool operator==(const PipelineDesc&) const = default;
 };
 
@@ -46,6 +47,9 @@ public:
 
     /// Draws `count` vertices (or 32-bit indices) of the bound vertex array as triangles.
     void drawTriangles(uint32_t count, bool indexed);
+    /// Draws `instances` instances of the first `count` vertices, non-indexed (one draw call;
+    /// gl_InstanceID runs from 0 in each).
+    void drawTrianglesInstanced(uint32_t count, uint32_t instances);
 
     /// Draw calls issued through this state since the last resetCounters().
     int drawCalls() const { return mDrawCalls; }

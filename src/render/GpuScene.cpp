@@ -119,6 +119,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         if (m.doubleSided) gpu.flags.x |= SPECULA_MATERIAL_DOUBLE_SIDED;
         if (m.alphaMode == scene::AlphaMode::Mask) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_MASK;
         if (m.alphaMode == scene::AlphaMode::Blend) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_BLEND;
+        binding.features = gpu.flags.x;
         gpuMaterials.push_back(gpu);
         mMaterials.push_back(binding);
     }
@@ -161,6 +162,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
             copy.flags.x |= SPECULA_MATERIAL_USE_VERTEX_COLOR;
             gpuMaterials.push_back(copy);
             mMaterials.push_back(mMaterials[size_t(gpu.material)]);
+            mMaterials.back().features = copy.flags.x;
             gpu.material = int(gpuMaterials.size() - 1);
         }
     }

@@ -27,6 +27,7 @@ struct MaterialBinding {
     std::array<const gl::Sampler*, size_t(TextureSlot::Count)> samplers{};
     scene::AlphaMode alphaMode = scene::AlphaMode::Opaque;
     bool doubleSided = false;
+    uint32_t features = 0; ///< SPECULA_MATERIAL_* bits: selects the shader variant
 };
 
 struct DrawItem {

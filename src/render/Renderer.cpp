@@ -17,6 +17,7 @@
 #include "render/LightBuffer.h"
 #include "shaders/shared/Bindings.h"
 #include "shaders/shared/FrameData.h"
+#include "shaders/shared/MaterialData.h"
 
 namespace specula::render {
 
@@ -83,7 +84,7 @@ struct Renderer::Impl {
     std::unique_ptr<GpuScene> scene;
 
     std::map<std::string, ForwardProgram> forwardPrograms;
-    gl::Program tonemapProgram;
+    std::map<int, gl::Program> tonemapPrograms; ///< by MSAA sample count (1 = no resolve)
     gl::VertexArray emptyVertexArray{"fullscreen triangle"};
     gl::Texture white;
     gl::Texture flatNormal;
@@ -95,7 +96,8 @@ struct Renderer::Impl {
     float lastExposureScale = 1.0f;
 
     bool timing = false;
-    gl::TimerQuery forwardTimer, resolveTimer, tonemapTimer;
+    bool hdrResolved = false; ///< hdrColor holds the last frame (MSAA resolves lazily)
+    gl::TimerQuery forwardTimer, tonemapTimer;
     FrameStats stats;
 
     Impl()
@@ -111,10 +113,25 @@ struct Renderer::Impl {
         flatNormal.upload(0, 0, 4, gl::PixelType::UnsignedByte, normalPixel);
     }
 
-    ForwardProgram& forwardProgram(const FrameSettings& settings)
+    /// The forward program for a BRDF choice and a material's features, compiled on first
+    /// use and cached for the run. Variants are defines of one source, never copies.
+    ForwardProgram& forwardProgram(const FrameSettings& settings, uint32_t features)
     {
         std::vector<std::string> defines;
         if (settings.brdfGeometry == BrdfGeometry::SchlickGGX) defines.push_back("BRDF_G_SCHLICK_GGX");
+        const std::pair<uint32_t, const char*> featureDefines[] = {
+            {SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE, "HAS_BASE_COLOR_TEXTURE"},
+            {SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE, "HAS_METALLIC_ROUGHNESS_TEXTURE"},
+            {SPECULA_MATERIAL_HAS_NORMAL_TEXTURE, "HAS_NORMAL_TEXTURE"},
+            {SPECULA_MATERIAL_HAS_OCCLUSION_TEXTURE, "HAS_OCCLUSION_TEXTURE"},
+            {SPECULA_MATERIAL_HAS_EMISSIVE_TEXTURE, "HAS_EMISSIVE_TEXTURE"},
+            {SPECULA_MATERIAL_DOUBLE_SIDED, "DOUBLE_SIDED"},
+            {SPECULA_MATERIAL_ALPHA_MASK, "ALPHA_MASK"},
+            {SPECULA_MATERIAL_ALPHA_BLEND, "ALPHA_BLEND"},
+            {SPECULA_MATERIAL_USE_VERTEX_COLOR, "VERTEX_COLOR"},
+        };
+        for (const auto& [bit, define] : featureDefines)
+            if (features & bit) defines.push_back(define);
         std::string key;
         for (const auto& d : defines) key += d + ";";
         auto it = forwardPrograms.find(key);
@@ -128,11 +145,16 @@ struct Renderer::Impl {
         return forwardPrograms.emplace(key, std::move(p)).first->second;
     }
 
-    gl::Program& tonemap()
+    gl::Program& tonemap(int samples)
     {
-        if (!tonemapProgram)
-            tonemapProgram = gl::Program({.vertex = "post/fullscreen.vert", .fragment = "post/tonemap.frag", .label = "tonemap"});
-        return tonemapProgram;
+        gl::Program& program = tonemapPrograms[samples];
+        if (!program) {
+            std::vector<std::string> defines;
+            if (samples > 1) defines.push_back("MSAA_SAMPLES " + std::to_string(samples));
+            program = gl::Program({.vertex = "post/fullscreen.vert", .fragment = "post/tonemap.frag", .defines = defines,
+                                   .label = "tonemap"});
+        }
+        return program;
     }
 
     void ensureTargets(int w, int h, int samples)
@@ -147,7 +169,7 @@ struct Renderer::Impl {
         desc.format = gl::Format::RGBA16F;
         desc.label = "hdr colour";
         hdrColor = gl::Texture(desc);
-        desc.format = gl::Format::RGBA8;
+        desc.format = gl::Format::SRGB8_ALPHA8;
         desc.label = "ldr colour";
         ldrColor = gl::Texture(desc);
         hdrFramebuffer = gl::Framebuffer("hdr");
@@ -191,8 +213,6 @@ struct Renderer::Impl {
 
     void drawScene(const View& view, const FrameSettings& settings)
     {
-        ForwardProgram& program = forwardProgram(settings);
-        state.useProgram(program.program);
         frame.bind(SPECULA_BINDING_FRAME);
         lights.bind();
         if (!scene) return;
@@ -207,6 +227,8 @@ struct Renderer::Impl {
         auto draw = [&](const DrawItem& item, bool blend) {
             const GpuPrimitive& p = scene->primitives()[size_t(item.primitive)];
             const MaterialBinding& m = scene->materials()[size_t(p.material)];
+            ForwardProgram& program = forwardProgram(settings, m.features);
+            state.useProgram(program.program);
             gl::PipelineDesc pipeline;
             pipeline.cull = m.doubleSided ? gl::CullMode::None : gl::CullMode::Back;
             pipeline.frontFaceClockwise = item.mirrored;
@@ -255,8 +277,9 @@ LightBuffer& Renderer::lights()
 
 void Renderer::prepare(const FrameSettings& settings)
 {
-    mImpl->forwardProgram(settings);
-    mImpl->tonemap();
+    if (mImpl->scene)
+        for (const MaterialBinding& m : mImpl->scene->materials()) mImpl->forwardProgram(settings, m.features);
+    mImpl->tonemap(std::clamp(settings.msaa, 1, 16));
 }
 
 void Renderer::setGpuTiming(bool enabled)
@@ -306,21 +329,18 @@ void Renderer::render(const View& view, const FrameSettings& settings)
         r.drawScene(view, settings);
         if (r.timing) r.forwardTimer.end();
     }
-    if (samples > 1) {
-        gl::DebugGroup group("resolve");
-        if (r.timing) r.resolveTimer.begin();
-        r.msaaFramebuffer.blitColorTo(r.hdrFramebuffer, r.width, r.height);
-        if (r.timing) r.resolveTimer.end();
-    }
+    r.hdrResolved = samples == 1;
     {
-        gl::DebugGroup group("tonemap");
+        // With MSAA the tone mapper resolves as it reads (one pass instead of a blit and a
+        // pass); the resolved HDR image is made only when someone asks (readRadiance).
+        gl::DebugGroup group(samples > 1 ? "resolve+tonemap" : "tonemap");
         if (r.timing) r.tonemapTimer.begin();
         r.state.bindFramebuffer(&r.ldrFramebuffer);
         r.state.viewport(0, 0, r.width, r.height);
-        r.state.apply({.noDepthTest = true, .noDepthWrite = true});
-        r.state.useProgram(r.tonemap());
+        r.state.apply({.noDepthTest = true, .noDepthWrite = true, .framebufferSrgb = true});
+        r.state.useProgram(r.tonemap(samples));
         r.frame.bind(SPECULA_BINDING_FRAME);
-        r.state.bindTexture(SPECULA_UNIT_POST_INPUT, r.hdrColor);
+        r.state.bindTexture(SPECULA_UNIT_POST_INPUT, samples > 1 ? r.msaaColor : r.hdrColor);
         r.state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
         r.state.bindVertexArray(r.emptyVertexArray);
         r.state.drawTriangles(3, false);
@@ -329,8 +349,7 @@ void Renderer::render(const View& view, const FrameSettings& settings)
     r.stats.drawCalls = r.state.drawCalls();
     if (r.timing) {
         r.stats.passes.push_back({"forward", r.forwardTimer.elapsedMs()});
-        if (samples > 1) r.stats.passes.push_back({"resolve", r.resolveTimer.elapsedMs()});
-        r.stats.passes.push_back({"tonemap", r.tonemapTimer.elapsedMs()});
+        r.stats.passes.push_back({samples > 1 ? "resolve+tonemap" : "tonemap", r.tonemapTimer.elapsedMs()});
     }
 }
 
@@ -351,7 +370,11 @@ ImageRGBA8 Renderer::readImage() const
 
 ImageFloat Renderer::readRadiance() const
 {
-    const Impl& r = *mImpl;
+    Impl& r = *mImpl;
+    if (!r.hdrResolved) {
+        r.msaaFramebuffer.blitColorTo(r.hdrFramebuffer, r.width, r.height);
+        r.hdrResolved = true;
+    }
     ImageFloat image;
     image.width = r.width;
     image.height = r.height;

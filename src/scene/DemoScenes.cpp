@@ -121,11 +121,11 @@ Scene makeDemoScene()
     spot.name = "spot";
     spot.type = Light::Type::Spot;
     spot.color = {1.0f, 0.95f, 0.85f};
-    spot.intensity = 40.0f; // cd
+    spot.intensity = 120.0f; // cd
     spot.innerConeAngle = glm::radians(12.0f);
     spot.outerConeAngle = glm::radians(22.0f);
-    const glm::vec3 spotPosition(0.0f, 6.5f, 4.0f);
-    addLight(scene, spot, spotPosition, glm::vec3(0.0f, 0.0f, 0.5f) - spotPosition);
+    const glm::vec3 spotPosition(0.0f, 6.5f, 5.0f);
+    addLight(scene, spot, spotPosition, glm::vec3(0.0f, 0.0f, 2.2f) - spotPosition);
     Light sun;
     sun.name = "sun";
     sun.type = Light::Type::Directional;
@@ -138,7 +138,7 @@ Scene makeDemoScene()
     camera.yfov = glm::radians(40.0f);
     camera.znear = 0.1f;
     camera.zfar = 100.0f;
-    const int node = addCamera(scene, camera, {0.0f, 3.4f, 9.0f}, {0.0f, 2.6f, 0.0f});
+    const int node = addCamera(scene, camera, {0.0f, 3.6f, 11.0f}, {0.0f, 2.7f, 0.0f});
     // The scene's first camera is the one first met walking the roots: move it to the front.
     scene.roots.pop_back();
     scene.roots.insert(scene.roots.begin(), node);
