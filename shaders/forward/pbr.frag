@@ -12,15 +12,13 @@
 
 layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
 layout(std140, binding = SPECULA_BINDING_LIGHTS) uniform LightsBlock { LightBlock lightData; };
-layout(std430, binding = SPECULA_BINDING_MATERIALS) readonly buffer MaterialBuffer { GpuMaterial materials[]; };
+layout(std140, binding = SPECULA_BINDING_MATERIAL) uniform MaterialBlock { GpuMaterial material; };
 
 layout(binding = SPECULA_UNIT_BASE_COLOR) uniform sampler2D uBaseColorTexture;
 layout(binding = SPECULA_UNIT_METALLIC_ROUGHNESS) uniform sampler2D uMetallicRoughnessTexture;
 layout(binding = SPECULA_UNIT_NORMAL) uniform sampler2D uNormalTexture;
 layout(binding = SPECULA_UNIT_OCCLUSION) uniform sampler2D uOcclusionTexture;
 layout(binding = SPECULA_UNIT_EMISSIVE) uniform sampler2D uEmissiveTexture;
-
-uniform uint uMaterial;
 
 in vec3 vWorldPosition;
 in vec3 vNormal;
@@ -46,15 +44,15 @@ const uint TEX_EMISSIVE = 4u;
 // Texture coordinates of one texture: its uv set and KHR_texture_transform.
 vec2 textureUv(uint texture)
 {
-    uint set = (materials[uMaterial].flags.y >> (2u * texture)) & 3u;
+    uint set = (material.flags.y >> (2u * texture)) & 3u;
     vec3 uv = vec3(set == 1u ? vUv1 : vUv0, 1.0);
-    return vec2(dot(materials[uMaterial].uvTransform[2u * texture].xyz, uv),
-                dot(materials[uMaterial].uvTransform[2u * texture + 1u].xyz, uv));
+    return vec2(dot(material.uvTransform[2u * texture].xyz, uv),
+                dot(material.uvTransform[2u * texture + 1u].xyz, uv));
 }
 
 void main()
 {
-    vec4 baseColor = materials[uMaterial].baseColorFactor;
+    vec4 baseColor = material.baseColorFactor;
 #if defined(HAS_BASE_COLOR_TEXTURE)
     baseColor *= texture(uBaseColorTexture, textureUv(TEX_BASE_COLOR)); // sRGB texture: decoded by GL
 #endif
@@ -62,7 +60,7 @@ void main()
     baseColor *= vColor;
 #endif
 #if defined(ALPHA_MASK)
-    if (baseColor.a < materials[uMaterial].alpha.x) discard;
+    if (baseColor.a < material.alpha.x) discard;
 #endif
 #if defined(ALPHA_BLEND)
     float alpha = baseColor.a;
@@ -70,7 +68,7 @@ void main()
     float alpha = 1.0;
 #endif
 
-    vec4 params = materials[uMaterial].params;
+    vec4 params = material.params;
     float metallic = params.x;
     float perceptualRoughness = params.y;
 #if defined(HAS_METALLIC_ROUGHNESS_TEXTURE)
@@ -121,7 +119,7 @@ void main()
     // Constant ambient (non-physical, 0 unless a scene asks): lights the diffuse part only.
     color += frame.ambient.rgb * surface.diffuseColor * occlusion;
 
-    vec3 emissive = materials[uMaterial].emissive.rgb;
+    vec3 emissive = material.emissive.rgb;
 #if defined(HAS_EMISSIVE_TEXTURE)
     emissive *= texture(uEmissiveTexture, textureUv(TEX_EMISSIVE)).rgb;
 #endif

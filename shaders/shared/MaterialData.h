@@ -1,4 +1,7 @@
-// Material parameters (storage buffer, one record per material, indexed per draw).
+// Material parameters: one record per material in one buffer, each bound as a uniform block
+// range for its draws. (A storage buffer indexed per draw would be simpler, but llvmpipe
+// returns zeros for storage-buffer loads in helper invocations, which breaks the texture
+// derivatives of KHR_texture_transform'd uvs along triangle edges.)
 #include "Prelude.h"
 
 SPECULA_SHARED_BEGIN

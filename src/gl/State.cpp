@@ -148,6 +148,18 @@ void bindUniformBuffer(uint32_t binding, const Buffer& buffer)
     glBindBufferBase(GL_UNIFORM_BUFFER, binding, buffer.id());
 }
 
+void bindUniformBufferRange(uint32_t binding, const Buffer& buffer, size_t offset, size_t size)
+{
+    glBindBufferRange(GL_UNIFORM_BUFFER, binding, buffer.id(), GLintptr(offset), GLsizeiptr(size));
+}
+
+int uniformBufferOffsetAlignment()
+{
+    GLint alignment = 256;
+    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
+    return alignment;
+}
+
 void bindStorageBuffer(uint32_t binding, const Buffer& buffer)
 {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer.id());

@@ -2,6 +2,7 @@
 // The one place that binds objects and sets fixed-function state for drawing. It remembers
 // what is bound and skips redundant calls. Call reset() after third-party GL code.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace specula::gl {
@@ -69,6 +70,9 @@ private:
 };
 
 void bindUniformBuffer(uint32_t binding, const Buffer& buffer);
+void bindUniformBufferRange(uint32_t binding, const Buffer& buffer, size_t offset, size_t size);
+/// GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT of the current context.
+int uniformBufferOffsetAlignment();
 void bindStorageBuffer(uint32_t binding, const Buffer& buffer);
 
 } // namespace specula::gl

@@ -1,8 +1,11 @@
 #include "render/GpuScene.h"
 
+#include <algorithm>
 #include <cstddef>
+#include <cstring>
 
 #include "core/Log.h"
+#include "gl/State.h"
 #include "shaders/shared/Bindings.h"
 #include "shaders/shared/MaterialData.h"
 
@@ -166,7 +169,13 @@ GpuScene::GpuScene(const scene::Scene& scene)
             gpu.material = int(gpuMaterials.size() - 1);
         }
     }
-    mMaterialBuffer = gl::Buffer(gpuMaterials.size() * sizeof(shared::GpuMaterial), gpuMaterials.data(), "materials");
+    // Each record starts at a multiple of GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT so it can be bound alone.
+    const size_t alignment = size_t(std::max(gl::uniformBufferOffsetAlignment(), 16));
+    mMaterialStride = (sizeof(shared::GpuMaterial) + alignment - 1) / alignment * alignment;
+    std::vector<std::byte> records(gpuMaterials.size() * mMaterialStride);
+    for (size_t i = 0; i < gpuMaterials.size(); ++i)
+        std::memcpy(records.data() + i * mMaterialStride, &gpuMaterials[i], sizeof(shared::GpuMaterial));
+    mMaterialBuffer = gl::Buffer(records.size(), records.data(), "materials");
 
     for (const scene::MeshInstance& instance : scene.meshInstances()) {
         for (int primitive : meshPrimitives[size_t(instance.mesh)]) {

@@ -45,6 +45,8 @@ public:
     const std::vector<MaterialBinding>& materials() const { return mMaterials; }
     const std::vector<DrawItem>& draws() const { return mDraws; }
     const gl::Buffer& materialBuffer() const { return mMaterialBuffer; }
+    /// Byte offset of material `index`'s record (records are aligned for uniform block ranges).
+    size_t materialOffset(int index) const { return size_t(index) * mMaterialStride; }
     size_t triangleCount() const { return mTriangles; }
     size_t textureBytes() const { return mTextureBytes; }
 
@@ -56,6 +58,7 @@ private:
     std::vector<MaterialBinding> mMaterials;
     std::vector<DrawItem> mDraws;
     gl::Buffer mMaterialBuffer;
+    size_t mMaterialStride = 0;
     // One texture per (image, colour space); images used as both get two.
     std::vector<std::array<gl::Texture, 2>> mTextures;
     std::vector<gl::Sampler> mSamplers;

@@ -13,6 +13,7 @@
 #include "gl/TimerQuery.h"
 #include "gl/UniformBuffer.h"
 #include "gl/VertexArray.h"
+#include "render/BillboardPass.h"
 #include "render/GpuScene.h"
 #include "render/LightBuffer.h"
 #include "shaders/shared/Bindings.h"
@@ -47,7 +48,6 @@ struct ForwardProgram {
     gl::Program program;
     int model = -1;
     int normalMatrix = -1;
-    int material = -1;
 };
 
 /// Six planes of the view frustum (Gribb & Hartmann 2001), normals pointing inwards.
@@ -82,6 +82,7 @@ struct Renderer::Impl {
     gl::UniformBuffer<shared::FrameData> frame{"frame"};
     LightBuffer lights;
     std::unique_ptr<GpuScene> scene;
+    BillboardPass billboards;
 
     std::map<std::string, ForwardProgram> forwardPrograms;
     std::map<int, gl::Program> tonemapPrograms; ///< by MSAA sample count (1 = no resolve)
@@ -141,7 +142,6 @@ struct Renderer::Impl {
                                  .label = "forward " + key});
         p.model = p.program.uniformLocation("uModel");
         p.normalMatrix = p.program.uniformLocation("uNormalMatrix");
-        p.material = p.program.uniformLocation("uMaterial");
         return forwardPrograms.emplace(key, std::move(p)).first->second;
     }
 
@@ -216,7 +216,7 @@ struct Renderer::Impl {
         frame.bind(SPECULA_BINDING_FRAME);
         lights.bind();
         if (!scene) return;
-        gl::bindStorageBuffer(SPECULA_BINDING_MATERIALS, scene->materialBuffer());
+        int boundMaterial = -1;
 
         const Frustum frustum(view.projection * view.view);
         struct Blended {
@@ -240,7 +240,11 @@ struct Renderer::Impl {
             bindMaterial(m);
             program.program.set(program.model, item.world);
             program.program.set(program.normalMatrix, item.normalMatrix);
-            program.program.set(program.material, uint32_t(p.material));
+            if (p.material != boundMaterial) {
+                gl::bindUniformBufferRange(SPECULA_BINDING_MATERIAL, scene->materialBuffer(),
+                                           scene->materialOffset(p.material), sizeof(shared::GpuMaterial));
+                boundMaterial = p.material;
+            }
             state.bindVertexArray(p.vertexArray);
             state.drawTriangles(p.count, p.indexed);
             stats.triangles += p.count / 3;
@@ -255,9 +259,13 @@ struct Renderer::Impl {
             }
             draw(item, false);
         }
+        // Cutout billboards belong to the opaque phase: depth-tested and written like surfaces.
+        stats.triangles += billboards.drawOpaque(state, view, height);
         // Back to front: view-space z is negative in front of the camera, most negative = farthest.
         std::stable_sort(blended.begin(), blended.end(), [](const Blended& a, const Blended& b) { return a.depth < b.depth; });
         for (const Blended& b : blended) draw(*b.item, true);
+        // Blended billboards after the blended surfaces (sorted apart from them), gizmos last.
+        stats.triangles += billboards.drawBlended(state, view, height, settings.gizmos ? &lights : nullptr);
     }
 };
 
@@ -267,6 +275,7 @@ Renderer::~Renderer() = default;
 void Renderer::setScene(const scene::Scene& scene)
 {
     mImpl->scene = std::make_unique<GpuScene>(scene);
+    mImpl->billboards.setScene(scene);
     mImpl->lights.setAll(placeLights(scene));
 }
 
@@ -280,6 +289,7 @@ void Renderer::prepare(const FrameSettings& settings)
     if (mImpl->scene)
         for (const MaterialBinding& m : mImpl->scene->materials()) mImpl->forwardProgram(settings, m.features);
     mImpl->tonemap(std::clamp(settings.msaa, 1, 16));
+    mImpl->billboards.prepare();
 }
 
 void Renderer::setGpuTiming(bool enabled)
