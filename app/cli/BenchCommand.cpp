@@ -2,7 +2,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <filesystem>
 #include <numeric>
+
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -53,21 +56,59 @@ int runBench(const BenchArgs& args)
     const double processStartMs = msSinceProcessStart();
     for (size_t i = 0; i < args.scenes.size(); ++i) {
         const std::string& name = args.scenes[i];
-        // Start-up: a fresh context, the scene built or loaded, uploaded, shaders compiled,
-        // first frame finished. The first scene's figure also counts process launch.
-        Stopwatch startup;
-        auto context = platform::Context::createHeadless({.debug = false});
-        const double contextMs = startup.elapsedMs();
-        scene::SceneDocument document = loadSceneOrBuiltin(name);
-        const render::FrameSettings settings = resolveSettings(document, args.frame);
-        const render::View view = prepareView(document, args.frame, settings);
-        const double loadMs = startup.elapsedMs() - contextMs;
-        render::Renderer renderer;
-        renderer.setScene(document.scene);
-        renderer.render(view, settings);
-        glFinish();
-        const double startupMs = startup.elapsedMs();
+        // Start-up: a fresh context, the scene built or loaded, the environment baked (cold:
+        // an empty bake cache) or read from the cache (warm), uploaded, shaders compiled, first
+        // frame finished. The first scene's cold figure also counts process launch.
+        const std::filesystem::path cache =
+            std::filesystem::temp_directory_path() / ("specula-bench-cache-" + std::to_string(::getpid()));
+        std::filesystem::remove_all(cache);
+        struct Started {
+            std::unique_ptr<platform::Context> context;
+            std::unique_ptr<render::Renderer> renderer;
+            scene::SceneDocument document;
+            render::FrameSettings settings;
+            render::View view;
+            double ms = 0, contextMs = 0, loadMs = 0;
+            render::BakeReport bake;
+            bool environment = false;
+        };
+        auto start = [&]() {
+            Started s;
+            Stopwatch startup;
+            s.context = platform::Context::createHeadless({.debug = false});
+            s.contextMs = startup.elapsedMs();
+            s.document = loadSceneOrBuiltin(name);
+            s.settings = resolveSettings(s.document, args.frame);
+            const auto environment = loadEnvironment(s.document, args.frame);
+            s.environment = environment.has_value();
+            s.view = prepareView(s.document, args.frame, s.settings, nullptr, s.environment);
+            s.loadMs = startup.elapsedMs() - s.contextMs;
+            s.renderer = std::make_unique<render::Renderer>();
+            s.renderer->setScene(s.document.scene);
+            if (environment) s.bake = s.renderer->setEnvironment(*environment, resolveBakeSettings(args.frame), cache);
+            s.renderer->render(s.view, s.settings);
+            glFinish();
+            s.ms = startup.elapsedMs();
+            return s;
+        };
+        Started cold = start();
         const double sinceLaunchMs = i == 0 ? msSinceProcessStart() : -1.0;
+        const bool hasEnvironment = cold.environment;
+        const double bakeMs = cold.bake.milliseconds;
+        const double coldMs = cold.ms;
+        double warmMs = coldMs;
+        if (hasEnvironment) {
+            cold = {};
+            cold = start(); // the same cache directory: the bake is read back
+            warmMs = cold.ms;
+        }
+        std::filesystem::remove_all(cache);
+        Started& s = cold;
+        render::Renderer& renderer = *s.renderer;
+        const render::FrameSettings& settings = s.settings;
+        const render::View& view = s.view;
+        scene::SceneDocument& document = s.document;
+        const double startupMs = coldMs, contextMs = s.contextMs, loadMs = s.loadMs;
         if (rendererName.empty()) rendererName = gl::queryDeviceInfo().renderer;
 
         for (int w = 0; w < args.warmup; ++w) renderer.render(view, settings);
@@ -97,6 +138,9 @@ int runBench(const BenchArgs& args)
                            {"triangles", document.scene.triangleCount()},
                            {"drawCalls", renderer.stats().drawCalls},
                            {"startupMs", startupMs},
+                           {"environment", hasEnvironment},
+                           {"bakeColdMs", hasEnvironment ? bakeMs : 0.0},
+                           {"startupWarmMs", warmMs},
                            {"startupContextMs", contextMs},
                            {"startupLoadMs", loadMs},
                            {"sinceLaunchMs", sinceLaunchMs},
@@ -115,15 +159,16 @@ int runBench(const BenchArgs& args)
     out << document.dump(2) << "\n";
 
     std::printf("renderer: %s\n", rendererName.c_str());
-    std::printf("%-14s %10s %9s %13s %13s %11s %8s\n", "scene", "size", "start-up", "frame median", "frame p10-p90",
-                "GPU median", "fps");
+    std::printf("%-16s %10s %9s %9s %9s %13s %13s %11s %7s\n", "scene", "size", "bake", "cold", "warm", "frame median",
+                "frame p10-p90", "GPU median", "fps");
     for (const auto& r : results) {
         const std::string size = std::to_string(r["width"].get<int>()) + "x" + std::to_string(r["height"].get<int>()) + "x" +
                                  std::to_string(r["msaa"].get<int>());
         const std::string spread = fmt::format("{:.1f}-{:.1f}", r["frameCpuMs"]["p10"].get<double>(), r["frameCpuMs"]["p90"].get<double>());
-        std::printf("%-14s %10s %6.0f ms %10.2f ms %10s ms %8.2f ms %8.1f\n", r["scene"].get<std::string>().c_str(), size.c_str(),
-                    r["startupMs"].get<double>(), r["frameCpuMs"]["median"].get<double>(), spread.c_str(),
-                    r["frameGpuMs"]["median"].get<double>(), r["fps"].get<double>());
+        std::printf("%-16s %10s %6.0f ms %6.0f ms %6.0f ms %10.2f ms %10s ms %8.2f ms %7.1f\n", r["scene"].get<std::string>().c_str(),
+                    size.c_str(), r["bakeColdMs"].get<double>(), r["startupMs"].get<double>(), r["startupWarmMs"].get<double>(),
+                    r["frameCpuMs"]["median"].get<double>(), spread.c_str(), r["frameGpuMs"]["median"].get<double>(),
+                    r["fps"].get<double>());
     }
     std::printf("wrote %s\n", args.output.c_str());
     return 0;

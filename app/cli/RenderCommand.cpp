@@ -20,8 +20,10 @@ int runRender(const RenderArgs& args)
     Stopwatch load;
     scene::SceneDocument document = loadSceneOrBuiltin(args.scene);
     const render::FrameSettings settings = resolveSettings(document, args.frame);
+    const std::optional<render::EnvironmentMap> environment = loadEnvironment(document, args.frame);
+    const render::BakeSettings bake = resolveBakeSettings(args.frame);
     int defaultLights = 0;
-    const render::View view = prepareView(document, args.frame, settings, &defaultLights);
+    const render::View view = prepareView(document, args.frame, settings, &defaultLights, environment.has_value());
     log::info("loaded {} in {:.0f} ms: {} meshes, {} triangles, {} lights{}", args.scene.empty() ? "demo" : args.scene,
               load.elapsedMs(), document.scene.meshes.size(), document.scene.triangleCount(), document.scene.lights.size(),
               defaultLights ? " (default rig)" : "");
@@ -30,18 +32,21 @@ int runRender(const RenderArgs& args)
     gl::DebugMonitor debug;
     render::Renderer renderer;
     renderer.setScene(document.scene);
+    if (environment) renderer.setEnvironment(*environment, bake, cacheDirectory(args.frame));
     renderer.render(view, settings);
+    const ImageRGBA8 image = renderer.readImage(); // waits for the GPU: the frame is done
+    const double firstFrameMs = msSinceProcessStart();
 
     std::string extension = output.extension().string();
     for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
     if (extension == ".png") {
-        writePng(output, renderer.readImage());
+        writePng(output, image);
     } else if (extension == ".hdr") {
         writeHdr(output, renderer.readRadiance());
     } else {
         writeExr(output, renderer.readRadiance());
     }
-    log::info("first frame {:.0f} ms after start; wrote {} ({}x{}, {} sample{}, {} tone mapping)", msSinceProcessStart(),
+    log::info("first frame {:.0f} ms after start; wrote {} ({}x{}, {} sample{}, {} tone mapping)", firstFrameMs,
               output.string(), settings.width, settings.height, settings.msaa, settings.msaa == 1 ? "" : "s",
               render::tonemapName(settings.tonemap));
     if (debug.errorCount() > 0) {

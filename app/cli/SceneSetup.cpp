@@ -1,5 +1,7 @@
 #include "SceneSetup.h"
 
+#include <cstdio>
+
 #include "core/Error.h"
 #include "scene/DemoScenes.h"
 
@@ -11,6 +13,15 @@ scene::SceneDocument loadSceneOrBuiltin(const std::string& name)
         scene::SceneDocument document;
         document.scene = scene::makeDemoScene();
         document.render.tonemap = "neutral";
+        return document;
+    }
+    if (name == "learnopengl-ibl") {
+        // The tutorial's IBL demo: Reinhard, Schlick-GGX (k = r^2/2 for the environment).
+        scene::SceneDocument document;
+        document.scene = scene::makeLearnOpenGlIblScene();
+        document.render.tonemap = "reinhard";
+        document.render.brdfG = "schlick-ggx";
+        document.render.defaultLights = false;
         return document;
     }
     if (name == "learnopengl") {
@@ -45,19 +56,75 @@ render::FrameSettings resolveSettings(const scene::SceneDocument& document, cons
     const auto geometry = render::parseBrdfGeometry(g);
     if (!geometry) throw Error("unknown --brdf-g '{}' (smith-ggx, schlick-ggx)", g);
     s.brdfGeometry = *geometry;
-    if (document.environment.color) s.background = *document.environment.color * document.environment.intensity;
+    s.gizmos = options.gizmos;
+    s.environment.intensity = options.envIntensity.value_or(document.environment.intensity);
+    s.environment.rotationDegrees = options.envRotation.value_or(document.environment.rotationDegrees);
+    if (s.environment.intensity < 0.0f) throw Error("--env-intensity must not be negative");
+    if (options.skybox) {
+        const std::string& sky = *options.skybox;
+        float blur = 0.0f;
+        char extra = 0;
+        if (sky == "on") {
+            s.environment.skybox = true;
+        } else if (sky == "off") {
+            s.environment.skybox = false;
+        } else if (std::sscanf(sky.c_str(), "blur=%f%c", &blur, &extra) == 1 && blur >= 0.0f && blur <= 1.0f) {
+            s.environment.skyboxBlur = blur;
+        } else {
+            throw Error("--skybox wants on, off or blur=R with R a roughness in [0, 1] (got '{}')", sky);
+        }
+    }
     if (document.scene.name == "learnopengl") s.ambient = glm::vec3(0.03f);
     return s;
 }
 
+namespace {
+
+glm::vec3 parseColor(const std::string& text)
+{
+    glm::vec3 c;
+    char extra = 0;
+    if (std::sscanf(text.c_str(), "%f,%f,%f%c", &c.x, &c.y, &c.z, &extra) != 3 || glm::any(glm::lessThan(c, glm::vec3(0.0f))))
+        throw Error("--env-color wants three non-negative numbers R,G,B (got '{}')", text);
+    return c;
+}
+
+} // namespace
+
+std::optional<render::EnvironmentMap> loadEnvironment(const scene::SceneDocument& document, const FrameOptions& options)
+{
+    if (options.envColor) return render::constantEnvironment(parseColor(*options.envColor));
+    if (options.env) {
+        if (*options.env == "none") return std::nullopt;
+        if (*options.env == "sky") return render::proceduralSky();
+        return render::loadEnvironmentMap(*options.env);
+    }
+    if (!document.environment.file.empty()) return render::loadEnvironmentMap(document.environment.file);
+    if (document.environment.color) return render::constantEnvironment(*document.environment.color);
+    if (document.scene.name == "learnopengl") return std::nullopt;
+    return render::proceduralSky();
+}
+
+render::BakeSettings resolveBakeSettings(const FrameOptions& options)
+{
+    const auto preset = render::bakePreset(options.bakePreset);
+    if (!preset) throw Error("unknown --bake-preset '{}' (default, reference)", options.bakePreset);
+    return *preset;
+}
+
+std::filesystem::path cacheDirectory(const FrameOptions& options)
+{
+    return options.noCache ? std::filesystem::path() : render::defaultCacheDirectory();
+}
+
 render::View prepareView(scene::SceneDocument& document, const FrameOptions& options,
-                         const render::FrameSettings& settings, int* added)
+                         const render::FrameSettings& settings, int* added, bool hasEnvironment)
 {
     const float aspect = float(settings.width) / float(settings.height);
     const render::View view = render::defaultView(document.scene, options.camera, aspect);
     int count = 0;
     const bool allowed = !options.noDefaultLights && document.render.defaultLights.value_or(true);
-    if (document.scene.lights.empty() && allowed) {
+    if (document.scene.lights.empty() && !hasEnvironment && allowed) {
         // The rig follows the viewer: from the scene's centre towards the camera.
         const glm::vec3 center = document.scene.worldBounds().empty() ? glm::vec3(0.0f) : document.scene.worldBounds().center();
         glm::vec3 toViewer = view.position - center;

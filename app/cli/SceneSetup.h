@@ -16,6 +16,16 @@ struct FrameOptions {
     std::optional<std::string> brdfG;
     int camera = -1;
     bool noDefaultLights = false;
+    // Environment: --env FILE|sky|none, --env-color R,G,B, --env-intensity, --env-rotation,
+    // --skybox on|off|blur=R, --bake-preset default|reference, --no-cache.
+    std::optional<std::string> env;
+    std::optional<std::string> envColor;
+    std::optional<float> envIntensity;
+    std::optional<float> envRotation;
+    std::optional<std::string> skybox;
+    std::string bakePreset = "default";
+    bool noCache = false;
+    bool gizmos = false;
 };
 
 /// `name` is a .gltf/.glb/.json path, or a built-in scene ("demo", "learnopengl"); empty = demo.
@@ -24,9 +34,17 @@ scene::SceneDocument loadSceneOrBuiltin(const std::string& name);
 /// Settings from the scene document overridden by the command line. Throws Error on bad values.
 render::FrameSettings resolveSettings(const scene::SceneDocument& document, const FrameOptions& options);
 
-/// The view for the frame; adds the default light rig to `document` when it has no lights
-/// and the user did not forbid it. Returns the number of default lights added via `added`.
+/// The environment the frame asks for: none, or a map (file, constant colour, procedural sky).
+/// Command line over scene file; the default is the procedural sky, except for the
+/// learnopengl scene (none, like the tutorial). Throws Error for bad files or values.
+std::optional<render::EnvironmentMap> loadEnvironment(const scene::SceneDocument& document, const FrameOptions& options);
+/// Bake settings and cache directory for the frame (--bake-preset, --no-cache).
+render::BakeSettings resolveBakeSettings(const FrameOptions& options);
+std::filesystem::path cacheDirectory(const FrameOptions& options);
+
+/// The view for the frame; adds the default light rig to `document` when it has no lights,
+/// no environment, and the user did not forbid it. Returns the number of default lights added via `added`.
 render::View prepareView(scene::SceneDocument& document, const FrameOptions& options,
-                         const render::FrameSettings& settings, int* added = nullptr);
+                         const render::FrameSettings& settings, int* added = nullptr, bool hasEnvironment = false);
 
 } // namespace specula::cli

@@ -22,6 +22,14 @@ void addFrameOptions(CLI::App* command, cli::FrameOptions& frame)
     command->add_option("--brdf-g", frame.brdfG, "masking-shadowing: smith-ggx (glTF, default) or schlick-ggx (UE4)");
     command->add_option("--camera", frame.camera, "index of the scene camera to use (default: the first, else framed)");
     command->add_flag("--no-default-lights", frame.noDefaultLights, "never add the default light rig");
+    command->add_option("--env", frame.env, "environment: an equirectangular .hdr or .exr, sky (procedural, the default) or none");
+    command->add_option("--env-color", frame.envColor, "a constant environment of radiance R,G,B (cd/m²)");
+    command->add_option("--env-intensity", frame.envIntensity, "scales the environment (default 1)");
+    command->add_option("--env-rotation", frame.envRotation, "turns the environment about +Y, degrees");
+    command->add_option("--skybox", frame.skybox, "on (default), off, or blur=R (R = roughness 0..1)");
+    command->add_option("--bake-preset", frame.bakePreset, "default, or reference (the LearnOpenGL tutorial's bake sizes)");
+    command->add_flag("--no-cache", frame.noCache, "bake the environment even if the bake cache holds it, and do not cache");
+    command->add_flag("--gizmos", frame.gizmos, "draw every light as a disc in the light's colour");
 }
 
 } // namespace
@@ -38,7 +46,7 @@ int main(int argc, char** argv)
 
     cli::RenderArgs render;
     CLI::App* renderCommand = app.add_subcommand("render", "render a scene to an image (PNG, Radiance HDR or OpenEXR)");
-    renderCommand->add_option("scene", render.scene, "a .gltf, .glb or .json scene, or a built-in: demo (default), learnopengl");
+    renderCommand->add_option("scene", render.scene, "a .gltf, .glb or .json scene, or a built-in: demo (default), learnopengl, learnopengl-ibl");
     renderCommand->add_option("-o,--output", render.output, "output image: .png (tone-mapped sRGB), .hdr or .exr (linear radiance x 2^EV)");
     addFrameOptions(renderCommand, render.frame);
 
@@ -46,11 +54,17 @@ int main(int argc, char** argv)
 
     cli::BenchArgs bench;
     CLI::App* benchCommand = app.add_subcommand("bench", "measure start-up and frame times of built-in scenes");
-    benchCommand->add_option("--scene", bench.scenes, "scenes to measure (default: demo learnopengl)");
+    benchCommand->add_option("--scene", bench.scenes, "scenes to measure (default: demo learnopengl learnopengl-ibl)");
     benchCommand->add_option("-o,--output", bench.output, "JSON results file (default bench.json)");
     benchCommand->add_option("--frames", bench.frames, "frames to time per scene (default 60)");
     benchCommand->add_option("--warmup", bench.warmup, "untimed frames first (default 5)");
     addFrameOptions(benchCommand, bench.frame);
+
+    cli::BakeArgs bake;
+    CLI::App* bakeCommand = app.add_subcommand("bake", "bake an environment for image-based lighting into the cache");
+    bakeCommand->add_option("env", bake.env, "an equirectangular .hdr or .exr, or sky")->required();
+    bakeCommand->add_option("--bake-preset", bake.preset, "default, or reference (the LearnOpenGL tutorial's bake sizes)");
+    bakeCommand->add_option("--cache-dir", bake.cacheDirectory, "where to write (default: $SPECULA_CACHE_DIR, $XDG_CACHE_HOME/specula or ~/.cache/specula)");
 
     try {
         app.parse(argc, argv);
@@ -62,6 +76,7 @@ int main(int argc, char** argv)
         if (*renderCommand) return cli::runRender(render);
         if (*infoCommand) return cli::runInfo();
         if (*benchCommand) return cli::runBench(bench);
+        if (*bakeCommand) return cli::runBake(bake);
     } catch (const Error& e) {
         std::fprintf(stderr, "specula: error: %s\n", e.what());
         return 1;

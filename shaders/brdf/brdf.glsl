@@ -25,8 +25,9 @@ SurfaceBrdf makeSurfaceBrdf(vec3 baseColor, float metallic, float perceptualRoug
     return s;
 }
 
-// f(l, v) for unit vectors n, v, l; returns BRDF value (1/sr), not yet multiplied by NoL.
-vec3 evaluateBrdf(SurfaceBrdf s, vec3 n, vec3 v, vec3 l)
+// f(l, v) for unit vectors n, v, l, split into its diffuse and specular lobes (1/sr), not
+// yet multiplied by NoL.
+void evaluateBrdfLobes(SurfaceBrdf s, vec3 n, vec3 v, vec3 l, out vec3 diffuse, out vec3 specular)
 {
     vec3 h = normalize(v + l);
     float NoV = abs(dot(n, v));
@@ -40,7 +41,13 @@ vec3 evaluateBrdf(SurfaceBrdf s, vec3 n, vec3 v, vec3 l)
 #else
     float V = V_SmithGGX(NoV, NoL, s.alpha);
 #endif
-    vec3 specular = F * (D * V);
-    vec3 diffuse = (1.0 - F) * Fd_Lambert(s.diffuseColor);
+    specular = F * (D * V);
+    diffuse = (1.0 - F) * Fd_Lambert(s.diffuseColor);
+}
+
+vec3 evaluateBrdf(SurfaceBrdf s, vec3 n, vec3 v, vec3 l)
+{
+    vec3 diffuse, specular;
+    evaluateBrdfLobes(s, n, v, l, diffuse, specular);
     return diffuse + specular;
 }

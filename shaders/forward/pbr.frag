@@ -2,13 +2,16 @@
 // Forward pass: glTF metal-rough material lit by punctual lights. This file only
 // orchestrates; the BRDF lives in brdf/, light falloff in lights/.
 // Material features are compile-time variants (see Renderer's variant key): HAS_*_TEXTURE,
-// VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND, DOUBLE_SIDED. A material without a feature pays
+// VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND, DOUBLE_SIDED; per frame, SSAO. A material without a feature pays
 // nothing for it; without ALPHA_MASK there is no discard, so early depth testing stays on.
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
 #include "../shared/MaterialData.h"
 #include "../brdf/brdf.glsl"
 #include "../lights/punctual.glsl"
+#if defined(IBL)
+#include "../ibl/ibl.glsl"
+#endif
 
 layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
 layout(std140, binding = SPECULA_BINDING_LIGHTS) uniform LightsBlock { LightBlock lightData; };
@@ -19,6 +22,12 @@ layout(binding = SPECULA_UNIT_METALLIC_ROUGHNESS) uniform sampler2D uMetallicRou
 layout(binding = SPECULA_UNIT_NORMAL) uniform sampler2D uNormalTexture;
 layout(binding = SPECULA_UNIT_OCCLUSION) uniform sampler2D uOcclusionTexture;
 layout(binding = SPECULA_UNIT_EMISSIVE) uniform sampler2D uEmissiveTexture;
+#if defined(SSAO)
+layout(binding = SPECULA_UNIT_SSAO) uniform sampler2D uSsao;
+#endif
+#if defined(IBL) || defined(ENERGY_COMPENSATION)
+layout(binding = SPECULA_UNIT_DFG) uniform sampler2D uDfg;
+#endif
 
 in vec3 vWorldPosition;
 in vec3 vNormal;
@@ -35,20 +44,7 @@ const float kMinPerceptualRoughness = 0.045;
 // Largest finite half float: keeps a very bright highlight from becoming Inf in RGBA16F.
 const float kHalfMax = 65504.0;
 
-const uint TEX_BASE_COLOR = 0u;
-const uint TEX_METALLIC_ROUGHNESS = 1u;
-const uint TEX_NORMAL = 2u;
-const uint TEX_OCCLUSION = 3u;
-const uint TEX_EMISSIVE = 4u;
-
-// Texture coordinates of one texture: its uv set and KHR_texture_transform.
-vec2 textureUv(uint texture)
-{
-    uint set = (material.flags.y >> (2u * texture)) & 3u;
-    vec3 uv = vec3(set == 1u ? vUv1 : vUv0, 1.0);
-    return vec2(dot(material.uvTransform[2u * texture].xyz, uv),
-                dot(material.uvTransform[2u * texture + 1u].xyz, uv));
-}
+#include "texture_uv.glsl"
 
 void main()
 {
@@ -102,6 +98,19 @@ void main()
     vec3 v = normalize(frame.cameraPosition.xyz - vWorldPosition);
     SurfaceBrdf surface = makeSurfaceBrdf(baseColor.rgb, metallic, perceptualRoughness);
 
+    float NoV = max(dot(n, v), 1e-4); // 1e-4: normal-mapped texels can face away from the viewer
+
+#if defined(IBL) || defined(ENERGY_COMPENSATION)
+    // Split-sum DFG terms: single-scattering specular albedo E = f0 * dfg.x + dfg.y. The
+    // multiple-scattering compensation scales the specular lobe by 1 + f0 (1 / E(1) - 1), so a
+    // white metal reflects all the energy single scattering loses (Fdez-Aguera 2019, "A
+    // Multiple-Scattering Microfacet Model for Real-Time Image-based Lighting"; Filament).
+    vec2 dfg = texture(uDfg, vec2(NoV, perceptualRoughness)).rg;
+    vec3 energyCompensation = 1.0 + surface.f0 * (1.0 / max(dfg.x + dfg.y, 1e-4) - 1.0);
+#else
+    const vec3 energyCompensation = vec3(1.0);
+#endif
+
     vec3 color = vec3(0.0);
     uint lightCount = min(lightData.count.x, uint(SPECULA_MAX_LIGHTS));
     for (uint i = 0u; i < lightCount; ++i) {
@@ -109,15 +118,36 @@ void main()
         vec3 illuminance = lightIlluminance(lightData.lights[i], vWorldPosition, l);
         float NoL = dot(n, l);
         if (NoL <= 0.0) continue;
-        color += evaluateBrdf(surface, n, v, l) * illuminance * NoL;
+        vec3 diffuse, specular;
+        evaluateBrdfLobes(surface, n, v, l, diffuse, specular);
+        color += (diffuse + specular * energyCompensation) * illuminance * NoL;
     }
 
     float occlusion = 1.0;
 #if defined(HAS_OCCLUSION_TEXTURE)
     occlusion = 1.0 + params.w * (texture(uOcclusionTexture, textureUv(TEX_OCCLUSION)).r - 1.0);
 #endif
+#if defined(SSAO)
+    // Screen-space ambient occlusion (render/SsaoPass), same size as this target: it scales
+    // the material's occlusion, so it darkens ambient light only, never the lights above.
+    occlusion *= texelFetch(uSsao, ivec2(gl_FragCoord.xy), 0).r;
+#endif
     // Constant ambient (non-physical, 0 unless a scene asks): lights the diffuse part only.
     color += frame.ambient.rgb * surface.diffuseColor * occlusion;
+
+#if defined(IBL)
+    vec3 r = reflect(-v, n);
+    vec3 specularAlbedo = (surface.f0 * dfg.x + dfg.y) * energyCompensation;
+    // What the specular lobe reflects, the diffuse lobe below it cannot: 1 - E keeps a white
+    // dielectric in a white furnace at or below the environment's radiance.
+    vec3 diffuseIbl = irradianceSh(toEnvironment(n)) * surface.diffuseColor * INV_PI * (1.0 - specularAlbedo);
+    vec3 specularIbl = prefilteredRadiance(specularDominantDirection(n, r, perceptualRoughness), perceptualRoughness) * specularAlbedo;
+    float specularAo = specularOcclusion(NoV, occlusion, perceptualRoughness);
+#if defined(HAS_NORMAL_TEXTURE)
+    specularAo *= horizonFade(r, flip ? -normalize(vNormal) : normalize(vNormal));
+#endif
+    color += (diffuseIbl * occlusion + specularIbl * specularAo) * environment.params.x;
+#endif
 
     vec3 emissive = material.emissive.rgb;
 #if defined(HAS_EMISSIVE_TEXTURE)

@@ -1,13 +1,19 @@
 #version 450 core
 // Exposure and tone mapping: the last pass, into an 8-bit sRGB target (GL encodes with
 // GL_FRAMEBUFFER_SRGB, the exact IEC 61966-2-1 curve). With MSAA_SAMPLES defined it also
-// resolves: the box average of the linear HDR samples, the same as a blit resolve.
+// resolves: the box average of the linear HDR samples, the same as a blit resolve. With
+// AUTO_EXPOSURE the exposure measured on the GPU multiplies frame.exposure.x.
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
 #include "../common/color.glsl"
 #include "tonemap.glsl"
 
 layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
+#if defined(AUTO_EXPOSURE)
+#include "../shared/PostData.h"
+// Left by the auto-exposure pass (render/ExposurePass) on the GPU: no read-back, no stall.
+layout(std430, binding = SPECULA_BINDING_EXPOSURE) readonly buffer ExposureBlock { ExposureState exposureState; };
+#endif
 #if defined(MSAA_SAMPLES)
 layout(binding = SPECULA_UNIT_POST_INPUT) uniform sampler2DMS uInput;
 
@@ -30,7 +36,11 @@ layout(location = 0) out vec4 outColor;
 
 void main()
 {
-    vec3 hdr = fetchRadiance(ivec2(gl_FragCoord.xy)) * frame.exposure.x;
+    float exposure = frame.exposure.x;
+#if defined(AUTO_EXPOSURE)
+    exposure *= exposureState.value.y; // frame.exposure.x is then the compensation, 2^EV
+#endif
+    vec3 hdr = fetchRadiance(ivec2(gl_FragCoord.xy)) * exposure;
     vec3 mapped = tonemap(max(hdr, vec3(0.0)), frame.options.x, frame.exposure.y);
     outColor = vec4(clamp(mapped, 0.0, 1.0), 1.0);
 }

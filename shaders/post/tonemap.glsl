@@ -45,8 +45,37 @@ vec3 tonemapNeutral(vec3 c)
     return mix(c, vec3(newPeak), g);
 }
 
+// AgX (Troy Sobotka, 2022), in Benjamin Wrensch's minimal form ("Minimal AgX Implementation",
+// 2023): the inset matrix, a log2 encoding over [-12.47, +4.03] stops around 0.18, a 6th-order
+// polynomial fit of AgX's default contrast sigmoid, the outset matrix, and the 2.2 display
+// EOTF so the result is linear again for our sRGB target. Bright saturated colours desaturate
+// towards white instead of clipping to a hue-shifted primary.
+vec3 agxContrastApprox(vec3 x)
+{
+    vec3 x2 = x * x;
+    vec3 x4 = x2 * x2;
+    return 15.5 * x4 * x2 - 40.14 * x4 * x + 31.96 * x4 - 6.868 * x2 * x + 0.4298 * x2 + 0.1191 * x - 0.00232;
+}
+
+vec3 tonemapAgx(vec3 c)
+{
+    const mat3 inset = mat3(0.842479062253094, 0.0423282422610123, 0.0423756549057051,
+                            0.0784335999999992, 0.878468636469772, 0.0784336,
+                            0.0792237451477643, 0.0791661274605434, 0.879142973793104);
+    const mat3 outset = mat3(1.19687900512017, -0.0528968517574562, -0.0529716355144438,
+                             -0.0980208811401368, 1.15190312990417, -0.0980434501171241,
+                             -0.0990297440797205, -0.0989611768448433, 1.15107367264116);
+    const float minEv = -12.47393, maxEv = 4.026069;
+    // 1e-10: log2(0) is -Inf; anything below 2^minEv maps to the same black anyway.
+    c = clamp(log2(max(inset * c, vec3(1e-10))), minEv, maxEv);
+    c = agxContrastApprox((c - minEv) / (maxEv - minEv));
+    // The polynomial dips just below 0 at black: clamp before the power.
+    return pow(max(outset * c, vec3(0.0)), vec3(2.2));
+}
+
 vec3 tonemap(vec3 c, uint op, float whitePoint)
 {
+    if (op == SPECULA_TONEMAP_AGX) return tonemapAgx(c);
     if (op == SPECULA_TONEMAP_REINHARD) return tonemapReinhard(c);
     if (op == SPECULA_TONEMAP_REINHARD_EXT) return tonemapReinhardExtended(c, whitePoint);
     if (op == SPECULA_TONEMAP_ACES) return tonemapAces(c);

@@ -7,6 +7,7 @@
 #define SPECULA_BINDING_FRAME 0
 #define SPECULA_BINDING_LIGHTS 1
 #define SPECULA_BINDING_MATERIAL 2 // one material's range of the material buffer, per draw
+#define SPECULA_BINDING_ENVIRONMENT 4
 // Storage buffers
 #define SPECULA_BINDING_BILLBOARDS 3
 // Texture units of the forward pass
@@ -17,8 +18,20 @@
 #define SPECULA_UNIT_EMISSIVE 4
 // The billboard pass's sprite
 #define SPECULA_UNIT_SPRITE 0
+// Image-based lighting (forward pass and skybox)
+#define SPECULA_UNIT_PREFILTERED 8
+#define SPECULA_UNIT_DFG 9
 // Post-processing input
 #define SPECULA_UNIT_POST_INPUT 0
+// Post-processing (render/BloomPass, SsaoPass, ExposurePass, FxaaPass)
+#define SPECULA_UNIT_POST_INPUT_1 1      // a compute pass's second and third inputs
+#define SPECULA_UNIT_POST_INPUT_2 2
+#define SPECULA_IMAGE_POST_OUTPUT 0      // image unit a compute pass writes
+#define SPECULA_UNIT_SSAO 12             // forward pass: the blurred ambient occlusion
+#define SPECULA_BINDING_SSAO 5           // uniform buffer: SsaoData
+#define SPECULA_BINDING_EXPOSURE_PARAMS 6 // uniform buffer: ExposureParams
+#define SPECULA_BINDING_EXPOSURE 7       // storage buffer: ExposureState
+#define SPECULA_BINDING_HISTOGRAM 8      // storage buffer: luminance histogram
 
 // Vertex attribute locations
 #define SPECULA_ATTRIB_POSITION 0

@@ -20,6 +20,7 @@ void State::reset()
     mProgram = mVertexArray = mFramebuffer = ~0u;
     mTextures.fill(~0u);
     mSamplers.fill(~0u);
+    mImages.fill({});
     mViewport = {-1, -1, -1, -1};
     mPipelineKnown = false;
     // Reversed or odd state from other code would silently change our results.
@@ -45,6 +46,35 @@ void State::drawTrianglesInstanced(uint32_t count, uint32_t instances)
 {
     glDrawArraysInstanced(GL_TRIANGLES, 0, GLsizei(count), GLsizei(instances));
     ++mDrawCalls;
+}
+
+void State::bindImage(int unit, const Texture& texture, int level, ImageAccess access)
+{
+    const ImageBinding binding{texture.id(), level, access};
+    if (mImages[size_t(unit)] == binding) return;
+    mImages[size_t(unit)] = binding;
+    const GLenum glAccess = access == ImageAccess::ReadOnly    ? GL_READ_ONLY
+                          : access == ImageAccess::WriteOnly ? GL_WRITE_ONLY
+                                                             : GL_READ_WRITE;
+    glBindImageTexture(GLuint(unit), texture.id(), level, GL_FALSE, 0, glAccess, internalFormat(texture.desc().format));
+}
+
+void State::dispatchCompute(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ)
+{
+    glDispatchCompute(groupsX, groupsY, groupsZ);
+}
+
+void State::memoryBarrier(Barrier barriers)
+{
+    const uint32_t b = uint32_t(barriers);
+    GLbitfield bits = 0;
+    if (b & uint32_t(Barrier::TextureFetch)) bits |= GL_TEXTURE_FETCH_BARRIER_BIT;
+    if (b & uint32_t(Barrier::Image)) bits |= GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
+    if (b & uint32_t(Barrier::StorageBuffer)) bits |= GL_SHADER_STORAGE_BARRIER_BIT;
+    if (b & uint32_t(Barrier::TextureUpdate)) bits |= GL_TEXTURE_UPDATE_BARRIER_BIT;
+    if (b & uint32_t(Barrier::BufferUpdate)) bits |= GL_BUFFER_UPDATE_BARRIER_BIT;
+    if (b & uint32_t(Barrier::Framebuffer)) bits |= GL_FRAMEBUFFER_BARRIER_BIT;
+    glMemoryBarrier(bits);
 }
 
 void State::useProgram(const Program& program)

@@ -18,6 +18,20 @@ enum class CompareOp : uint8_t { Less, LessEqual, Equal, Always };
 enum class CullMode : uint8_t { None, Back, Front };
 enum class BlendMode : uint8_t { None, Alpha, PremultipliedAlpha, Additive };
 
+enum class ImageAccess : uint8_t { ReadOnly, WriteOnly, ReadWrite };
+
+/// What a memory barrier makes visible to later commands (glMemoryBarrier bits): writes by
+/// compute shaders (images, storage buffers) are not ordered with later reads otherwise.
+enum class Barrier : uint32_t {
+    TextureFetch = 1u << 0,  ///< sampling the written texture
+    Image = 1u << 1,         ///< imageLoad/imageStore of it
+    StorageBuffer = 1u << 2, ///< storage-buffer reads
+    TextureUpdate = 1u << 3, ///< glGetTextureImage and texture uploads
+    BufferUpdate = 1u << 4,  ///< buffer reads back and updates
+    Framebuffer = 1u << 5,   ///< rendering to or blitting from the texture
+};
+constexpr Barrier operator|(Barrier a, Barrier b) { return Barrier(uint32_t(a) | uint32_t(b)); }
+
 /// Fixed-function state of a pass. Zero values are the defaults.
 struct PipelineDesc {
     bool noDepthTest = false;
@@ -46,6 +60,12 @@ public:
     /// Forgets the cache and restores GL defaults this class relies on.
     void reset();
 
+    /// Binds one level of a texture to an image unit for compute shaders, in its own format.
+    void bindImage(int unit, const Texture& texture, int level, ImageAccess access);
+    /// Runs the bound compute program over groups × local size invocations.
+    void dispatchCompute(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ = 1);
+    static void memoryBarrier(Barrier barriers);
+
     /// Draws `count` vertices (or 32-bit indices) of the bound vertex array as triangles.
     void drawTriangles(uint32_t count, bool indexed);
     /// Draws `instances` instances of the first `count` vertices, non-indexed (one draw call;
@@ -63,6 +83,14 @@ private:
     uint32_t mFramebuffer = ~0u;
     std::array<uint32_t, kUnits> mTextures{};
     std::array<uint32_t, kUnits> mSamplers{};
+    static constexpr int kImageUnits = 8;
+    struct ImageBinding {
+        uint32_t texture = ~0u;
+        int level = -1;
+        ImageAccess access = ImageAccess::ReadOnly;
+        bool operator==(const ImageBinding&) const = default;
+    };
+    std::array<ImageBinding, kImageUnits> mImages{};
     std::array<int, 4> mViewport{-1, -1, -1, -1};
     PipelineDesc mPipeline;
     bool mPipelineKnown = false;

@@ -87,6 +87,11 @@ GLenum glWrap(Wrap wrap)
 
 } // namespace
 
+uint32_t internalFormat(Format format)
+{
+    return glInternalFormat(format);
+}
+
 void detail::deleteTexture(uint32_t id)
 {
     glDeleteTextures(1, &id);

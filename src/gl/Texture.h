@@ -22,6 +22,9 @@ enum class Format {
     Depth24, Depth32F, Depth24Stencil8,
 };
 
+/// The GL internal format (GLenum) of `format`, for calls that name it (image binding).
+uint32_t internalFormat(Format format);
+
 /// Type of the client-side pixels passed to upload() or wanted from read().
 enum class PixelType { UnsignedByte, HalfFloat, Float };
 

@@ -14,9 +14,16 @@
 #include "gl/UniformBuffer.h"
 #include "gl/VertexArray.h"
 #include "render/BillboardPass.h"
+#include "render/BloomPass.h"
+#include "render/ExposurePass.h"
+#include "render/Frustum.h"
+#include "render/FxaaPass.h"
 #include "render/GpuScene.h"
+#include "render/ImageBasedLighting.h"
 #include "render/LightBuffer.h"
+#include "render/SsaoPass.h"
 #include "shaders/shared/Bindings.h"
+#include "shaders/shared/EnvironmentData.h"
 #include "shaders/shared/FrameData.h"
 #include "shaders/shared/MaterialData.h"
 
@@ -39,6 +46,7 @@ uint32_t tonemapId(Tonemap t)
     case Tonemap::ReinhardExtended: return SPECULA_TONEMAP_REINHARD_EXT;
     case Tonemap::Aces: return SPECULA_TONEMAP_ACES;
     case Tonemap::Neutral: return SPECULA_TONEMAP_NEUTRAL;
+    case Tonemap::Agx: return SPECULA_TONEMAP_AGX;
     }
     return SPECULA_TONEMAP_NONE;
 }
@@ -50,30 +58,14 @@ struct ForwardProgram {
     int normalMatrix = -1;
 };
 
-/// Six planes of the view frustum (Gribb & Hartmann 2001), normals pointing inwards.
-struct Frustum {
-    glm::vec4 planes[6];
-    explicit Frustum(const glm::mat4& m)
-    {
-        const glm::mat4 t = glm::transpose(m);
-        planes[0] = t[3] + t[0];
-        planes[1] = t[3] - t[0];
-        planes[2] = t[3] + t[1];
-        planes[3] = t[3] - t[1];
-        planes[4] = t[3] + t[2];
-        planes[5] = t[3] - t[2];
-    }
-    bool intersects(const scene::Bounds& b) const
-    {
-        if (b.empty()) return false;
-        for (const glm::vec4& p : planes) {
-            // The box corner furthest along the plane normal.
-            const glm::vec3 corner(p.x >= 0 ? b.max.x : b.min.x, p.y >= 0 ? b.max.y : b.min.y, p.z >= 0 ? b.max.z : b.min.z);
-            if (glm::dot(glm::vec3(p), corner) + p.w < 0.0f) return false;
-        }
-        return true;
-    }
-};
+/// What a frame actually runs: a debug view needs its pass on.
+FrameSettings effectiveSettings(const FrameSettings& requested)
+{
+    FrameSettings s = requested;
+    if (s.debugView == DebugView::Ssao) s.ssao.enabled = true;
+    if (s.debugView == DebugView::Bloom) s.bloom.enabled = true;
+    return s;
+}
 
 } // namespace
 
@@ -85,7 +77,10 @@ struct Renderer::Impl {
     BillboardPass billboards;
 
     std::map<std::string, ForwardProgram> forwardPrograms;
-    std::map<int, gl::Program> tonemapPrograms; ///< by MSAA sample count (1 = no resolve)
+    std::map<int, gl::Program> tonemapPrograms; ///< by 2 × MSAA sample count (1 = no resolve) + auto exposure
+    ImageBasedLighting ibl;
+    gl::UniformBuffer<shared::EnvironmentData> environment{"environment"};
+    gl::Program skyboxProgram;
     gl::VertexArray emptyVertexArray{"fullscreen triangle"};
     gl::Texture white;
     gl::Texture flatNormal;
@@ -96,10 +91,39 @@ struct Renderer::Impl {
     gl::Framebuffer msaaFramebuffer, hdrFramebuffer, ldrFramebuffer;
     float lastExposureScale = 1.0f;
 
+    // Post-processing passes, made on first use: a pass that is off costs nothing.
+    std::unique_ptr<SsaoPass> ssao;
+    std::unique_ptr<BloomPass> bloom;
+    std::unique_ptr<ExposurePass> autoExposure;
+    std::unique_ptr<FxaaPass> fxaa;
+    gl::Texture fxaaInput; ///< the tone-mapped frame FXAA reads (sRGB, made when FXAA is on)
+    gl::Framebuffer fxaaFramebuffer;
+    gl::Program debugProgram;
+    bool lastAutoExposure = false;
+    DebugView lastDebugView = DebugView::None;
+
     bool timing = false;
     bool hdrResolved = false; ///< hdrColor holds the last frame (MSAA resolves lazily)
-    gl::TimerQuery forwardTimer, tonemapTimer;
+    std::map<std::string, gl::TimerQuery> timers; ///< one per pass name, reused every frame
+    std::vector<std::pair<const char*, gl::TimerQuery*>> timed; ///< this frame's, in order
     FrameStats stats;
+
+    /// One pass of the frame: a debug group and, when timing, a timer query.
+    template <typename Body>
+    void pass(const char* name, Body&& body)
+    {
+        gl::DebugGroup group(name);
+        gl::TimerQuery* timer = nullptr;
+        if (timing) {
+            timer = &timers[name];
+            timer->begin();
+        }
+        body();
+        if (timer) {
+            timer->end();
+            timed.emplace_back(name, timer);
+        }
+    }
 
     Impl()
     {
@@ -116,10 +140,15 @@ struct Renderer::Impl {
 
     /// The forward program for a BRDF choice and a material's features, compiled on first
     /// use and cached for the run. Variants are defines of one source, never copies.
+    bool iblOn(const FrameSettings& settings) const { return ibl.hasEnvironment() && settings.environment.lighting; }
+
     ForwardProgram& forwardProgram(const FrameSettings& settings, uint32_t features)
     {
         std::vector<std::string> defines;
         if (settings.brdfGeometry == BrdfGeometry::SchlickGGX) defines.push_back("BRDF_G_SCHLICK_GGX");
+        if (iblOn(settings)) defines.push_back("IBL");
+        if (settings.energyCompensation) defines.push_back("ENERGY_COMPENSATION");
+        if (settings.ssao.enabled) defines.push_back("SSAO");
         const std::pair<uint32_t, const char*> featureDefines[] = {
             {SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE, "HAS_BASE_COLOR_TEXTURE"},
             {SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE, "HAS_METALLIC_ROUGHNESS_TEXTURE"},
@@ -145,12 +174,13 @@ struct Renderer::Impl {
         return forwardPrograms.emplace(key, std::move(p)).first->second;
     }
 
-    gl::Program& tonemap(int samples)
+    gl::Program& tonemap(int samples, bool automaticExposure)
     {
-        gl::Program& program = tonemapPrograms[samples];
+        gl::Program& program = tonemapPrograms[2 * samples + (automaticExposure ? 1 : 0)];
         if (!program) {
             std::vector<std::string> defines;
             if (samples > 1) defines.push_back("MSAA_SAMPLES " + std::to_string(samples));
+            if (automaticExposure) defines.push_back("AUTO_EXPOSURE");
             program = gl::Program({.vertex = "post/fullscreen.vert", .fragment = "post/tonemap.frag", .defines = defines,
                                    .label = "tonemap"});
         }
@@ -160,6 +190,9 @@ struct Renderer::Impl {
     void ensureTargets(int w, int h, int samples)
     {
         if (w == width && h == height && samples == msaa) return;
+        // Deleted GL objects free their names and new ones may reuse them: the binding cache
+        // must not mistake a new framebuffer for the old one it thinks is bound.
+        state.reset();
         width = w;
         height = h;
         msaa = samples;
@@ -211,9 +244,53 @@ struct Renderer::Impl {
         }
     }
 
+    void bindEnvironment(const FrameSettings& settings)
+    {
+        if (settings.energyCompensation || iblOn(settings)) {
+            state.bindTexture(SPECULA_UNIT_DFG, ibl.dfg(settings.brdfGeometry == BrdfGeometry::SchlickGGX));
+            state.bindSampler(SPECULA_UNIT_DFG, nullptr);
+        }
+        if (ibl.hasEnvironment()) {
+            state.bindTexture(SPECULA_UNIT_PREFILTERED, ibl.prefiltered());
+            state.bindSampler(SPECULA_UNIT_PREFILTERED, nullptr);
+            environment.bind(SPECULA_BINDING_ENVIRONMENT);
+        }
+    }
+
+    void updateEnvironment(const View& view, const FrameSettings& settings)
+    {
+        if (!ibl.hasEnvironment()) return;
+        auto& e = environment.data();
+        for (size_t i = 0; i < 9; ++i) e.sh[i] = glm::vec4(ibl.sh()[i], 0.0f);
+        e.worldToEnvironment = glm::mat4(environmentRotation(-settings.environment.rotationDegrees));
+        e.inverseViewProjection = glm::inverse(view.projection * view.view);
+        const float blur = std::clamp(settings.environment.skyboxBlur, 0.0f, 1.0f);
+        e.params = glm::vec4(settings.environment.intensity, float(ibl.prefiltered().levels()),
+                             blur > 0.0f ? blur * float(ibl.prefiltered().levels() - 1) : -1.0f,
+                             settings.environment.skybox ? 1.0f : 0.0f);
+        environment.upload();
+    }
+
+    void drawSkybox(const FrameSettings& settings)
+    {
+        if (!ibl.hasEnvironment() || !settings.environment.skybox) return;
+        gl::DebugGroup group("skybox");
+        if (!skyboxProgram)
+            skyboxProgram = gl::Program({.vertex = "ibl/skybox.vert", .fragment = "ibl/skybox.frag", .label = "skybox"});
+        state.useProgram(skyboxProgram);
+        // Depth 1 passes only where nothing was drawn (the clear value), and writes nothing.
+        state.apply({.noDepthWrite = true, .depthCompare = gl::CompareOp::LessEqual, .cull = gl::CullMode::None});
+        state.bindTexture(0, ibl.cube());
+        state.bindSampler(0, nullptr);
+        state.bindVertexArray(emptyVertexArray);
+        state.drawTriangles(3, false);
+    }
+
     void drawScene(const View& view, const FrameSettings& settings)
     {
         frame.bind(SPECULA_BINDING_FRAME);
+        updateEnvironment(view, settings);
+        bindEnvironment(settings);
         lights.bind();
         if (!scene) return;
         int boundMaterial = -1;
@@ -260,7 +337,9 @@ struct Renderer::Impl {
             draw(item, false);
         }
         // Cutout billboards belong to the opaque phase: depth-tested and written like surfaces.
-        stats.triangles += billboards.drawOpaque(state, view, height);
+        stats.triangles += billboards.drawOpaque(state, height);
+        // The sky after the opaque surfaces (it fills only what they left) and before anything blended.
+        drawSkybox(settings);
         // Back to front: view-space z is negative in front of the camera, most negative = farthest.
         std::stable_sort(blended.begin(), blended.end(), [](const Blended& a, const Blended& b) { return a.depth < b.depth; });
         for (const Blended& b : blended) draw(*b.item, true);
@@ -274,9 +353,28 @@ Renderer::~Renderer() = default;
 
 void Renderer::setScene(const scene::Scene& scene)
 {
+    mImpl->state.reset(); // textures and vertex arrays are replaced: forget cached bindings
     mImpl->scene = std::make_unique<GpuScene>(scene);
     mImpl->billboards.setScene(scene);
     mImpl->lights.setAll(placeLights(scene));
+}
+
+BakeReport Renderer::setEnvironment(const EnvironmentMap& map, const BakeSettings& settings, const std::filesystem::path& cacheDirectory)
+{
+    mImpl->state.reset();
+    mImpl->ibl.setLutCacheDirectory(cacheDirectory);
+    return mImpl->ibl.setEnvironment(map, settings, cacheDirectory);
+}
+
+void Renderer::clearEnvironment()
+{
+    mImpl->state.reset();
+    mImpl->ibl = ImageBasedLighting();
+}
+
+const Sh9* Renderer::environmentSh() const
+{
+    return mImpl->ibl.hasEnvironment() ? &mImpl->ibl.sh() : nullptr;
 }
 
 LightBuffer& Renderer::lights()
@@ -284,12 +382,32 @@ LightBuffer& Renderer::lights()
     return mImpl->lights;
 }
 
-void Renderer::prepare(const FrameSettings& settings)
+void Renderer::prepare(const FrameSettings& requested)
 {
-    if (mImpl->scene)
-        for (const MaterialBinding& m : mImpl->scene->materials()) mImpl->forwardProgram(settings, m.features);
-    mImpl->tonemap(std::clamp(settings.msaa, 1, 16));
-    mImpl->billboards.prepare();
+    Impl& r = *mImpl;
+    const FrameSettings settings = effectiveSettings(requested);
+    if (r.scene)
+        for (const MaterialBinding& m : r.scene->materials()) r.forwardProgram(settings, m.features);
+    const int samples = std::clamp(settings.msaa, 1, 16);
+    const bool hdrPasses = settings.bloom.enabled || settings.autoExposure.enabled;
+    r.tonemap(hdrPasses ? 1 : samples, settings.autoExposure.enabled);
+    r.billboards.prepare();
+    if (settings.ssao.enabled) {
+        if (!r.ssao) r.ssao = std::make_unique<SsaoPass>();
+        r.ssao->prepare(r.scene.get());
+    }
+    if (settings.bloom.enabled) {
+        if (!r.bloom) r.bloom = std::make_unique<BloomPass>();
+        r.bloom->prepare(settings.bloom);
+    }
+    if (settings.autoExposure.enabled) {
+        if (!r.autoExposure) r.autoExposure = std::make_unique<ExposurePass>();
+        r.autoExposure->prepare();
+    }
+    if (settings.fxaa.enabled) {
+        if (!r.fxaa) r.fxaa = std::make_unique<FxaaPass>();
+        r.fxaa->prepare();
+    }
 }
 
 void Renderer::setGpuTiming(bool enabled)

@@ -14,6 +14,7 @@ std::optional<Tonemap> parseTonemap(std::string_view name)
     if (name == "reinhard-ext") return Tonemap::ReinhardExtended;
     if (name == "aces") return Tonemap::Aces;
     if (name == "neutral") return Tonemap::Neutral;
+    if (name == "agx") return Tonemap::Agx;
     return std::nullopt;
 }
 
@@ -25,6 +26,7 @@ const char* tonemapName(Tonemap tonemap)
     case Tonemap::ReinhardExtended: return "reinhard-ext";
     case Tonemap::Aces: return "aces";
     case Tonemap::Neutral: return "neutral";
+    case Tonemap::Agx: return "agx";
     }
     return "none";
 }
@@ -63,6 +65,20 @@ glm::vec3 applyTonemap(Tonemap tonemap, glm::vec3 c, float whitePoint)
         c *= newPeak / peak;
         const float g = 1.0f - 1.0f / (desaturation * (peak - newPeak) + 1.0f);
         return glm::mix(c, glm::vec3(newPeak), g);
+    }
+    case Tonemap::Agx: {
+        // Minimal AgX (Wrensch 2023, after Sobotka): see shaders/post/tonemap.glsl.
+        const glm::mat3 inset(0.842479062253094f, 0.0423282422610123f, 0.0423756549057051f, 0.0784335999999992f,
+                              0.878468636469772f, 0.0784336f, 0.0792237451477643f, 0.0791661274605434f, 0.879142973793104f);
+        const glm::mat3 outset(1.19687900512017f, -0.0528968517574562f, -0.0529716355144438f, -0.0980208811401368f,
+                               1.15190312990417f, -0.0980434501171241f, -0.0990297440797205f, -0.0989611768448433f,
+                               1.15107367264116f);
+        const float minEv = -12.47393f, maxEv = 4.026069f;
+        glm::vec3 x = glm::clamp(glm::log2(glm::max(inset * c, glm::vec3(1e-10f))), minEv, maxEv);
+        x = (x - minEv) / (maxEv - minEv);
+        const glm::vec3 x2 = x * x, x4 = x2 * x2;
+        x = 15.5f * x4 * x2 - 40.14f * x4 * x + 31.96f * x4 - 6.868f * x2 * x + 0.4298f * x2 + 0.1191f * x - 0.00232f;
+        return glm::pow(glm::max(outset * x, glm::vec3(0.0f)), glm::vec3(2.2f));
     }
     }
     return c;

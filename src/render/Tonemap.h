@@ -7,7 +7,7 @@
 
 namespace specula::render {
 
-enum class Tonemap { None, Reinhard, ReinhardExtended, Aces, Neutral };
+enum class Tonemap { None, Reinhard, ReinhardExtended, Aces, Neutral, Agx };
 
 std::optional<Tonemap> parseTonemap(std::string_view name);
 const char* tonemapName(Tonemap tonemap);

@@ -8,6 +8,8 @@
 
 namespace specula::scene {
 
+Scene makeLearnOpenGlScene(float sphereZ, const char* name);
+
 glm::quat lookRotation(glm::vec3 direction, glm::vec3 up)
 {
     const glm::vec3 forward = glm::normalize(direction);
@@ -133,6 +135,48 @@ Scene makeDemoScene()
     sun.intensity = 2.0f; // lux
     addLight(scene, sun, glm::vec3(0.0f), glm::normalize(glm::vec3(0.4f, -1.0f, -0.6f)));
 
+    // Billboards, one group per kind (unlit: tints are radiance in cd/m²). A row of cut-out
+    // trees behind the spheres turns about +Y only; glowing lanterns in front face the camera
+    // (HDR, blended, so they can bloom); two leaning neon rods turn about their own axes.
+    BillboardGroup trees;
+    trees.name = "trees";
+    trees.kind = BillboardKind::AxisAligned;
+    trees.sprite = BuiltinSprite::Tree;
+    trees.size = {1.6f, 3.2f};
+    trees.anchor = {0.5f, 0.0f}; // the trunk's foot stands on the floor
+    trees.alphaMode = AlphaMode::Mask;
+    trees.tint = glm::vec3(1.0f);
+    for (int i = 0; i < 9; ++i) {
+        // A fixed, irregular pattern of heights and depths so the row does not look stamped.
+        const float jitter = float((i * 7) % 5) / 4.0f; // 0..1
+        trees.billboards.push_back({{-6.0f + 1.5f * float(i), 0.0f, -4.5f - 0.8f * jitter}, 0.8f + 0.4f * jitter, glm::vec3(1.0f)});
+    }
+    scene.billboards.push_back(std::move(trees));
+
+    BillboardGroup lanterns;
+    lanterns.name = "lanterns";
+    lanterns.kind = BillboardKind::PointSprite;
+    lanterns.sprite = BuiltinSprite::Disc;
+    lanterns.size = glm::vec2(0.45f);
+    lanterns.alphaMode = AlphaMode::Blend;
+    lanterns.tint = {6.0f, 3.2f, 1.2f};
+    for (int i = 0; i < 4; ++i)
+        lanterns.billboards.push_back({{-4.5f + 3.0f * float(i), 0.35f, 2.6f}, 1.0f, glm::vec3(1.0f)});
+    scene.billboards.push_back(std::move(lanterns));
+
+    BillboardGroup rods;
+    rods.name = "neon rods";
+    rods.kind = BillboardKind::ArbitraryAxis;
+    rods.sprite = BuiltinSprite::Disc; // stretched along the axis: a tube with soft ends
+    rods.alphaMode = AlphaMode::Blend;
+    rods.size = {0.16f, 2.6f};
+    rods.tint = {5.0f, 0.6f, 3.5f};
+    for (float side : {-1.0f, 1.0f}) {
+        // Leaning outwards; each turns about its own axis only, so it stays a rod from any side.
+        rods.billboards.push_back({{5.0f * side, 1.4f, 1.0f}, 1.0f, glm::vec3(1.0f), {0.35f * side, 1.0f, 0.0f}});
+    }
+    scene.billboards.push_back(std::move(rods));
+
     Camera camera;
     camera.name = "demo camera";
     camera.yfov = glm::radians(40.0f);
@@ -145,10 +189,20 @@ Scene makeDemoScene()
     return scene;
 }
 
+Scene makeLearnOpenGlIblScene()
+{
+    return makeLearnOpenGlScene(-2.0f, "learnopengl-ibl");
+}
+
 Scene makeLearnOpenGlScene()
 {
+    return makeLearnOpenGlScene(0.0f, "learnopengl");
+}
+
+Scene makeLearnOpenGlScene(float sphereZ, const char* name)
+{
     Scene scene;
-    scene.name = "learnopengl";
+    scene.name = name;
     const Primitive sphere = makeUvSphere(1.0f, 64, 64);
     for (int row = 0; row < 7; ++row) {
         for (int col = 0; col < 7; ++col) {
@@ -156,7 +210,7 @@ Scene makeLearnOpenGlScene()
             material.baseColorFactor = glm::vec4(0.5f, 0.0f, 0.0f, 1.0f);
             material.metallicFactor = float(row) / 7.0f;
             material.roughnessFactor = std::clamp(float(col) / 7.0f, 0.05f, 1.0f);
-            const glm::vec3 position((float(col) - 3.0f) * 2.5f, (float(row) - 3.0f) * 2.5f, 0.0f);
+            const glm::vec3 position((float(col) - 3.0f) * 2.5f, (float(row) - 3.0f) * 2.5f, sphereZ);
             addShape(scene, sphere, material, glm::translate(glm::mat4(1.0f), position), "sphere");
         }
     }

@@ -5,7 +5,9 @@
 namespace specula::scene {
 
 /// The demo: a 5x5 grid of spheres (metallic rising by row, roughness by column), a floor,
-/// three coloured point lights, a spot light and a directional light, and a camera.
+/// three coloured point lights, a spot light and a directional light, a camera, and one
+/// billboard group of each kind (axis-aligned trees, point-sprite lanterns, leaning
+/// arbitrary-axis neon rods).
 Scene makeDemoScene();
 
 /// Equal to the LearnOpenGL "PBR lighting" demo: 7x7 spheres (radius 1, 64x64 segments) at
@@ -13,6 +15,10 @@ Scene makeDemoScene();
 /// albedo (0.5, 0, 0); four point lights of (300, 300, 300) at (+-10, +-10, 10), each also
 /// drawn as a sphere scaled 0.5; camera at (0, 0, 3) looking down -Z, 45 degree fov, near 0.1, far 100.
 Scene makeLearnOpenGlScene();
+
+/// The LearnOpenGL "IBL specular" demo: the same spheres and lights with the spheres moved to
+/// z = -2 (the environment is set by the caller and drawn as the skybox).
+Scene makeLearnOpenGlIblScene();
 
 /// Adds the default rig when a scene has no light: three directional lights (key 3 lux from
 /// the upper left front, fill 1 lux from the right, rim 2 lux from behind), placed relative to

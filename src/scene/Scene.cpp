@@ -86,6 +86,16 @@ void Scene::append(Scene other, const glm::mat4& transform)
     move(lights, other.lights);
     move(nodes, other.nodes);
     move(warnings, other.warnings);
+    // Billboards are in world space, not nodes: place them with the transform here. Their size
+    // stays as given (a sprite has no orientation for a rotation or scale to act on).
+    for (auto& group : other.billboards) {
+        if (group.image >= 0) group.image += imageBase;
+        for (auto& billboard : group.billboards) {
+            billboard.position = glm::vec3(transform * glm::vec4(billboard.position, 1.0f));
+            billboard.axis = glm::mat3(transform) * billboard.axis;
+        }
+    }
+    move(billboards, other.billboards);
 
     Node root;
     root.name = other.name.empty() ? "model" : other.name;

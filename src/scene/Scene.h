@@ -170,6 +170,44 @@ struct LightInstance {
     glm::vec3 direction{0.0f, 0.0f, -1.0f}; ///< where the light points (local -Z)
 };
 
+/// How a billboard turns to face the camera (the basis formulas are in render/Billboard.h).
+enum class BillboardKind : uint32_t {
+    PointSprite = 0,   ///< turns about its centre to face the camera, keeping the camera's up
+    AxisAligned = 1,   ///< turns about world +Y only (trees, grass)
+    ArbitraryAxis = 2, ///< turns about its Billboard::axis only (beams, tracers)
+};
+
+/// The procedural sprite used when a billboard group has no image (no file needed).
+enum class BuiltinSprite : uint32_t {
+    Disc = 0, ///< soft round disc, white, alpha falling off towards the rim
+    Tree = 1, ///< a conifer shape: brown trunk, green canopy, hard alpha edges for cutout
+};
+
+/// One billboard of a group.
+struct Billboard {
+    glm::vec3 position{0.0f}; ///< world space, metres; where the group's anchor goes
+    float scale = 1.0f;       ///< multiplies the group's size
+    glm::vec3 tint{1.0f};     ///< multiplies the group's tint
+    glm::vec3 axis{0.0f, 1.0f, 0.0f}; ///< ArbitraryAxis: the axis it turns about (world); need not be unit
+};
+
+/// Billboards sharing one sprite, kind, size and alpha mode: drawn with one instanced draw.
+/// Billboards are unlit: a texel of colour c (sRGB decoded) and alpha a emits radiance
+/// c × tint × Billboard::tint cd/m², so tints above 1 make bright (HDR) sprites that bloom.
+struct BillboardGroup {
+    std::string name;
+    BillboardKind kind = BillboardKind::PointSprite;
+    glm::vec2 size{1.0f};             ///< width, height: metres, or pixels when sizeInPixels
+    bool sizeInPixels = false;        ///< constant size on screen whatever the distance
+    glm::vec2 anchor{0.5f};           ///< point of the sprite at the position, (0, 0) = bottom left
+    glm::vec3 tint{1.0f};             ///< linear RGB radiance multiplier, cd/m²; HDR allowed
+    AlphaMode alphaMode = AlphaMode::Mask; ///< Mask = cutout (opaque phase), Blend = sorted back to front
+    float alphaCutoff = 0.5f;         ///< Mask: texels with alpha below it are discarded
+    int image = -1;                   ///< index into Scene::images; -1 = the built-in `sprite`
+    BuiltinSprite sprite = BuiltinSprite::Disc;
+    std::vector<Billboard> billboards;
+};
+
 struct Scene {
     std::string name;
     std::vector<Image> images;
@@ -180,6 +218,8 @@ struct Scene {
     std::vector<Light> lights;
     std::vector<Node> nodes;
     std::vector<int> roots;
+    /// Camera-facing sprites, in world space (not nodes: they have no transform of their own).
+    std::vector<BillboardGroup> billboards;
     /// Warnings met while loading (missing textures...), already logged.
     std::vector<std::string> warnings;
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <random>
 #include <set>
 #include <string_view>
 #include <vector>
@@ -15,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
+#include "core/ImageIO.h"
 #include "scene/GltfImporter.h"
 #include "scene/Procedural.h"
 
@@ -469,6 +471,110 @@ void parseCamera(const Object& object, Scene& scene)
     scene.roots.insert(scene.roots.begin(), index);
 }
 
+const std::vector<std::string_view> kBillboardKeys = {"position", "scale", "tint", "axis"};
+
+/// A billboard group: its own sprite, kind, size and alpha mode, and billboards given one by one
+/// ("position", "billboards") and/or scattered at random in a box ("scatter").
+void parseBillboardGroup(const Object& object, Scene& scene, const fs::path& directory, size_t index)
+{
+    BillboardGroup group;
+    group.name = object.string("name").value_or(fmt::format("billboards{}", index));
+    const std::string kind = object.choice("kind", {"point-sprite", "axis-aligned", "arbitrary-axis"}).value_or("point-sprite");
+    group.kind = kind == "axis-aligned"     ? BillboardKind::AxisAligned
+               : kind == "arbitrary-axis"   ? BillboardKind::ArbitraryAxis
+                                            : BillboardKind::PointSprite;
+    const bool arbitrary = group.kind == BillboardKind::ArbitraryAxis;
+
+    object.notBoth("sprite", "image");
+    const std::string sprite = object.choice("sprite", {"disc", "tree"}).value_or("disc");
+    group.sprite = sprite == "tree" ? BuiltinSprite::Tree : BuiltinSprite::Disc;
+    if (const auto file = object.string("image")) {
+        if (file->empty()) object.fail("image", "must not be empty");
+        const fs::path path = fs::path(*file).is_absolute() ? fs::path(*file) : directory / *file;
+        ImageRGBA8 decoded;
+        try {
+            decoded = readPng(path);
+        } catch (const Error& e) {
+            object.fail(object.path("image") + ": " + e.what());
+        }
+        Image image;
+        image.name = path.filename().string();
+        image.width = decoded.width;
+        image.height = decoded.height;
+        image.pixels = std::move(decoded.pixels);
+        scene.images.push_back(std::move(image));
+        group.image = int(scene.images.size() - 1);
+    }
+
+    if (object.has("size")) {
+        if (object.at("size").is_number()) {
+            group.size = glm::vec2(*object.number("size"));
+        } else {
+            const auto size = object.numbers("size", {2});
+            group.size = {size[0], size[1]};
+        }
+        if (!(group.size.x > 0.0f && group.size.y > 0.0f)) object.fail("size", "must be positive");
+    }
+    group.sizeInPixels = object.boolean("sizeInPixels").value_or(false);
+    if (const auto anchor = object.numbers("anchor", {2}); !anchor.empty()) {
+        group.anchor = {anchor[0], anchor[1]};
+        if (!(glm::all(glm::greaterThanEqual(group.anchor, glm::vec2(0.0f))) && glm::all(glm::lessThanEqual(group.anchor, glm::vec2(1.0f)))))
+            object.fail("anchor", "must be between 0 and 1 in both coordinates");
+    }
+    group.tint = object.color("tint").value_or(group.tint);
+    const std::string alphaMode = object.choice("alphaMode", {"opaque", "mask", "blend"}).value_or("mask");
+    group.alphaMode = alphaMode == "opaque" ? AlphaMode::Opaque : alphaMode == "blend" ? AlphaMode::Blend : AlphaMode::Mask;
+    object.onlyFor("alphaCutoff", group.alphaMode == AlphaMode::Mask, "alphaMode \"mask\"");
+    group.alphaCutoff = object.unitInterval("alphaCutoff").value_or(group.alphaCutoff);
+    // The group's axis is each billboard's default; a billboard may give its own.
+    object.onlyFor("axis", arbitrary, "arbitrary-axis billboards");
+    const glm::vec3 axis = object.direction("axis").value_or(glm::vec3(0.0f, 1.0f, 0.0f));
+
+    if (!object.has("position") && !object.has("billboards") && !object.has("scatter"))
+        object.fail(fmt::format("{} needs 'position', 'billboards' or 'scatter'", object.where()));
+    if (const auto position = object.vec3("position")) group.billboards.push_back({*position, 1.0f, glm::vec3(1.0f), axis});
+    for (const Object& entry : object.objects("billboards", kBillboardKeys)) {
+        entry.required("position");
+        entry.onlyFor("axis", arbitrary, "arbitrary-axis billboards");
+        Billboard b;
+        b.position = *entry.vec3("position");
+        b.scale = entry.nonNegative("scale", true).value_or(1.0f);
+        b.tint = entry.color("tint").value_or(glm::vec3(1.0f));
+        b.axis = entry.direction("axis").value_or(axis);
+        group.billboards.push_back(b);
+    }
+    if (const auto scatter = object.object("scatter", {"count", "min", "max", "scale", "seed"})) {
+        scatter->required("count");
+        scatter->required("min");
+        scatter->required("max");
+        const int count = *scatter->integer("count", 1, 1000000);
+        const glm::vec3 lo = *scatter->vec3("min"), hi = *scatter->vec3("max");
+        if (!glm::all(glm::lessThanEqual(lo, hi))) scatter->fail("max", "must not be below min in any coordinate");
+        glm::vec2 scale(1.0f);
+        if (scatter->has("scale")) {
+            if (scatter->at("scale").is_number()) {
+                scale = glm::vec2(*scatter->number("scale"));
+            } else {
+                const auto range = scatter->numbers("scale", {2});
+                scale = {range[0], range[1]};
+            }
+            if (!(scale.x > 0.0f && scale.y >= scale.x)) scatter->fail("scale", "must be positive, [smallest, largest]");
+        }
+        // mt19937's output sequence is fixed by the C++ standard (unlike the distributions), so
+        // a seed gives the same field on every platform; 24 bits make a float in [0, 1).
+        std::mt19937 random(uint32_t(scatter->integer("seed", 0, INT32_MAX).value_or(0)));
+        auto uniform = [&] { return float(random() >> 8) * (1.0f / 16777216.0f); };
+        for (int i = 0; i < count; ++i) {
+            Billboard b;
+            b.position = lo + (hi - lo) * glm::vec3(uniform(), uniform(), uniform());
+            b.scale = glm::mix(scale.x, scale.y, uniform());
+            b.axis = axis;
+            group.billboards.push_back(b);
+        }
+    }
+    scene.billboards.push_back(std::move(group));
+}
+
 EnvironmentSettings parseEnvironment(const Object& object, const fs::path& directory)
 {
     EnvironmentSettings environment;
@@ -575,7 +681,7 @@ SceneDocument loadSceneFile(const fs::path& path)
     if (in.bad()) throw Error("{}: cannot read: {}", path.string(), std::generic_category().message(errno));
 
     const Json json = parseJson(path, text);
-    const Object root(path, json, "", {"models", "shapes", "lights", "camera", "environment", "render"});
+    const Object root(path, json, "", {"models", "shapes", "lights", "billboards", "camera", "environment", "render"});
     const fs::path directory = path.parent_path();
 
     SceneDocument document;
@@ -590,6 +696,10 @@ SceneDocument loadSceneFile(const fs::path& path)
     const auto lights = root.objects("lights", {"type", "name", "position", "direction", "target", "color", "intensity",
                                                 "range", "innerConeAngle", "outerConeAngle"});
     for (size_t i = 0; i < lights.size(); ++i) parseLight(lights[i], scene, i);
+    const auto billboards = root.objects("billboards", {"name", "kind", "sprite", "image", "size", "sizeInPixels", "anchor",
+                                                        "tint", "alphaMode", "alphaCutoff", "axis", "position",
+                                                        "billboards", "scatter"});
+    for (size_t i = 0; i < billboards.size(); ++i) parseBillboardGroup(billboards[i], scene, directory, i);
     if (const auto camera = root.object("camera", {"type", "name", "position", "target", "direction", "up", "yfov",
                                                    "aspectRatio", "znear", "zfar", "xmag", "ymag"}))
         parseCamera(*camera, scene);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace specula::test {
 namespace fs = std::filesystem;
@@ -34,7 +35,9 @@ int CliResult::errorLines() const
 
 CliResult runCli(const std::string& arguments)
 {
-    const fs::path dir = fs::temp_directory_path() / "specula-cli-capture";
+    // One capture directory per process: ctest runs tests in parallel processes.
+    static int call = 0;
+    const fs::path dir = fs::temp_directory_path() / ("specula-cli-capture-" + std::to_string(::getpid()) + "-" + std::to_string(++call));
     fs::create_directories(dir);
     const fs::path out = dir / "stdout", err = dir / "stderr";
     const std::string command = std::string(SPECULA_CLI_PATH) + " " + arguments + " </dev/null >" + out.string() + " 2>" + err.string();
@@ -43,6 +46,7 @@ CliResult runCli(const std::string& arguments)
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     result.out = slurp(out);
     result.err = slurp(err);
+    fs::remove_all(dir);
     return result;
 }
 

@@ -42,3 +42,23 @@ TEST(CliRender, Info)
     for (const char* field : {"vendor:", "renderer:", "version:", "GL_MAX_UNIFORM_BLOCK_SIZE", "GL_MAX_SAMPLES"})
         EXPECT_NE(r.out.find(field), std::string::npos) << field << " missing from:\n" << r.out;
 }
+
+TEST(CliRender, GizmosDrawTheLights)
+{
+    // The demo's red point light sits at (-3.5, 1, 2); with --gizmos a disc of its colour marks it,
+    // so the image changes, and only where gizmos are drawn.
+    const std::string dir = tempDir("gizmos");
+    ASSERT_EQ(runCli("render --width 160 --height 90 --msaa 1 -o " + dir + "/plain.png").exitCode, 0);
+    const auto r = runCli("render --width 160 --height 90 --msaa 1 --gizmos -o " + dir + "/gizmos.png");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const specula::ImageRGBA8 plain = specula::readPng(dir + "/plain.png");
+    const specula::ImageRGBA8 gizmos = specula::readPng(dir + "/gizmos.png");
+    ASSERT_EQ(plain.pixels.size(), gizmos.pixels.size());
+    size_t changed = 0;
+    for (size_t i = 0; i < plain.pixels.size(); i += 4)
+        if (plain.pixels[i] != gizmos.pixels[i] || plain.pixels[i + 1] != gizmos.pixels[i + 1] || plain.pixels[i + 2] != gizmos.pixels[i + 2])
+            ++changed;
+    // Three or four 24-pixel discs in view (the sun's and spot's may fall outside): a few hundred pixels.
+    EXPECT_GT(changed, 100u);
+    EXPECT_LT(changed, 2500u);
+}

@@ -1,0 +1,30 @@
+#include <cstdio>
+
+#include "Commands.h"
+#include "core/Error.h"
+#include "gl/Debug.h"
+#include "platform/Context.h"
+#include "render/ImageBasedLighting.h"
+
+namespace specula::cli {
+
+int runBake(const BakeArgs& args)
+{
+    const auto preset = render::bakePreset(args.preset);
+    if (!preset) throw Error("unknown --bake-preset '{}' (default, reference)", args.preset);
+    const render::EnvironmentMap map = args.env == "sky" ? render::proceduralSky() : render::loadEnvironmentMap(args.env);
+    const std::filesystem::path directory = args.cacheDirectory.empty() ? render::defaultCacheDirectory() : std::filesystem::path(args.cacheDirectory);
+    auto context = platform::Context::createHeadless();
+    gl::DebugMonitor debug;
+    render::ImageBasedLighting ibl;
+    ibl.setLutCacheDirectory(directory);
+    const render::BakeReport report = ibl.setEnvironment(map, *preset, directory);
+    ibl.dfg(false);
+    ibl.dfg(true);
+    if (debug.errorCount() > 0) throw Error("OpenGL reported {} error(s); first: {}", debug.errorCount(), debug.errors().front());
+    std::printf("%s %s (%s, %.0f ms)\n", report.fromCache ? "already cached:" : "wrote", report.cacheFile.string().c_str(),
+                preset->name.c_str(), report.milliseconds);
+    return 0;
+}
+
+} // namespace specula::cli

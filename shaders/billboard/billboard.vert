@@ -1,0 +1,53 @@
+#version 450 core
+// Instanced billboards: six vertices per quad from gl_VertexID, one instance per billboard
+// read from a storage buffer. The billboard matrix (right, up, look, position) is built here
+// and multiplied by view and projection.
+#include "../shared/Bindings.h"
+#include "../shared/FrameData.h"
+#include "../shared/BillboardData.h"
+#include "basis.glsl"
+
+layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
+layout(std430, binding = SPECULA_BINDING_BILLBOARDS) readonly buffer BillboardBuffer { GpuBillboard billboards[]; };
+
+uniform uint uFirstInstance;  // gl_InstanceID starts at 0 in every draw (no gl_BaseInstance in GL 4.5)
+uniform uint uKind;           // SPECULA_BILLBOARD_*
+uniform vec2 uSize;           // width, height: world units, or pixels when uSizeInPixels
+uniform vec2 uAnchor;         // the sprite point at the position, (0, 0) = bottom left
+uniform bool uSizeInPixels;
+uniform float uViewportHeight;
+
+out vec2 vUv;
+out vec3 vTint;
+
+// Two counter-clockwise triangles seen from +Z (the camera side).
+const vec2 kCorners[6] = vec2[](vec2(0, 0), vec2(1, 0), vec2(1, 1), vec2(0, 0), vec2(1, 1), vec2(0, 1));
+
+void main()
+{
+    GpuBillboard b = billboards[uFirstInstance + uint(gl_InstanceID)];
+    vec3 position = b.positionScale.xyz;
+    vec3 camera = frame.cameraPosition.xyz;
+    // The camera's up in world space: the second row of the view rotation (its inverse is its transpose).
+    vec3 cameraUp = vec3(frame.view[0][1], frame.view[1][1], frame.view[2][1]);
+
+    mat3 basis;
+    if (uKind == SPECULA_BILLBOARD_AXIS_ALIGNED) basis = axisAlignedBasis(position, camera, cameraUp);
+    else if (uKind == SPECULA_BILLBOARD_ARBITRARY_AXIS) basis = arbitraryAxisBasis(position, camera, cameraUp, b.axis.xyz);
+    else basis = pointSpriteBasis(position, camera, cameraUp);
+
+    float scale = b.positionScale.w;
+    if (uSizeInPixels) {
+        // A pixel spans 2w / (P[1][1] * height) world units at clip w (render::worldUnitsPerPixel);
+        // 0 behind the camera so the quad collapses there instead of flipping towards the viewer.
+        float w = (frame.viewProjection * vec4(position, 1.0)).w;
+        scale *= 2.0 * max(w, 0.0) / (frame.projection[1][1] * uViewportHeight);
+    }
+
+    vec2 uv = kCorners[gl_VertexID];
+    vec2 local = (uv - uAnchor) * uSize * scale;
+    mat4 model = mat4(vec4(basis[0], 0.0), vec4(basis[1], 0.0), vec4(basis[2], 0.0), vec4(position, 1.0));
+    vUv = uv;
+    vTint = b.tint.rgb;
+    gl_Position = frame.projection * (frame.view * (model * vec4(local, 0.0, 1.0)));
+}

@@ -1,0 +1,17 @@
+// Texture coordinates of a material's textures, shared by the forward pass and the depth/normal
+// pre-pass. The includer declares the `material` block (GpuMaterial) and the inputs vUv0, vUv1.
+
+const uint TEX_BASE_COLOR = 0u;
+const uint TEX_METALLIC_ROUGHNESS = 1u;
+const uint TEX_NORMAL = 2u;
+const uint TEX_OCCLUSION = 3u;
+const uint TEX_EMISSIVE = 4u;
+
+// Texture coordinates of one texture: its uv set and KHR_texture_transform.
+vec2 textureUv(uint texture)
+{
+    uint set = (material.flags.y >> (2u * texture)) & 3u;
+    vec3 uv = vec3(set == 1u ? vUv1 : vUv0, 1.0);
+    return vec2(dot(material.uvTransform[2u * texture].xyz, uv),
+                dot(material.uvTransform[2u * texture + 1u].xyz, uv));
+}

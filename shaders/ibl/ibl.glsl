@@ -1,0 +1,60 @@
+// Image-based lighting for the forward pass: SH irradiance for the diffuse lobe, the
+// prefiltered radiance and DFG table (split sum, Karis 2013) for the specular lobe.
+#include "../shared/EnvironmentData.h"
+
+layout(std140, binding = SPECULA_BINDING_ENVIRONMENT) uniform EnvironmentBlock { EnvironmentData environment; };
+layout(binding = SPECULA_UNIT_PREFILTERED) uniform samplerCube uPrefiltered;
+
+vec3 toEnvironment(vec3 worldDirection)
+{
+    return mat3(environment.worldToEnvironment) * worldDirection;
+}
+
+// Irradiance E(n) from the order-2 SH of the radiance (Ramamoorthi & Hanrahan 2001, eq. 8,
+// 13): the clamped-cosine convolution scales band l by A_0 = pi, A_1 = 2pi/3, A_2 = pi/4.
+vec3 irradianceSh(vec3 n)
+{
+    const float c0 = 0.282095 * PI;
+    const float c1 = 0.488603 * 2.0 * PI / 3.0;
+    const float c2 = 1.092548 * PI / 4.0;
+    const float c3 = 0.315392 * PI / 4.0;
+    const float c4 = 0.546274 * PI / 4.0;
+    vec3 e = environment.sh[0].rgb * c0
+           + environment.sh[1].rgb * (c1 * n.y) + environment.sh[2].rgb * (c1 * n.z) + environment.sh[3].rgb * (c1 * n.x)
+           + environment.sh[4].rgb * (c2 * n.x * n.y) + environment.sh[5].rgb * (c2 * n.y * n.z)
+           + environment.sh[6].rgb * (c3 * (3.0 * n.z * n.z - 1.0)) + environment.sh[7].rgb * (c2 * n.x * n.z)
+           + environment.sh[8].rgb * (c4 * (n.x * n.x - n.y * n.y));
+    return max(e, vec3(0.0));
+}
+
+// The split sum prefilters with n = v = r; a real GGX lobe leans from r towards n as
+// roughness grows. Sampling along this dominant direction instead of r removes most of that
+// error (Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", listing 22).
+vec3 specularDominantDirection(vec3 n, vec3 r, float perceptualRoughness)
+{
+    float alpha = perceptualRoughness * perceptualRoughness;
+    float smoothness = 1.0 - alpha;
+    return normalize(mix(n, r, smoothness * (sqrt(smoothness) + alpha)));
+}
+
+vec3 prefilteredRadiance(vec3 r, float perceptualRoughness)
+{
+    float lod = perceptualRoughness * (environment.params.y - 1.0);
+    return textureLod(uPrefiltered, toEnvironment(r), lod).rgb;
+}
+
+// Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", eq. 107: specular occlusion from
+// ambient occlusion, tighter for smooth surfaces.
+float specularOcclusion(float NoV, float ao, float perceptualRoughness)
+{
+    float alpha = perceptualRoughness * perceptualRoughness;
+    return clamp(pow(NoV + ao, exp2(-16.0 * alpha - 1.0)) - 1.0 + ao, 0.0, 1.0);
+}
+
+// Horizon fading (Russell 2015, "Horizon Occlusion for Normal Mapped Reflections"): a normal
+// map can reflect directions below the geometric surface; fade what they would fetch.
+float horizonFade(vec3 r, vec3 geometricNormal)
+{
+    float horizon = clamp(1.0 + 1.3 * dot(r, geometricNormal), 0.0, 1.0);
+    return horizon * horizon;
+}

@@ -1,0 +1,28 @@
+// Low-discrepancy sequence and GGX importance sampling for the bakes.
+
+// Hammersley point i of n (Van der Corput radical inverse in base 2).
+vec2 hammersley(uint i, uint n)
+{
+    return vec2(float(i) / float(n), float(bitfieldReverse(i)) * 2.3283064365386963e-10);
+}
+
+// Half vector around +Z distributed as D_GGX(h) (n.h): Walter et al. 2007, eq. 35-36;
+// Karis 2013, "Real Shading in Unreal Engine 4", ImportanceSampleGGX.
+vec3 importanceSampleGgx(vec2 xi, float alpha)
+{
+    float phi = 2.0 * PI * xi.x;
+    float cosTheta = sqrt((1.0 - xi.y) / (1.0 + (alpha * alpha - 1.0) * xi.y));
+    float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
+    return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
+}
+
+// Orthonormal basis around n (Duff et al. 2017, "Building an Orthonormal Basis, Revisited").
+mat3 basisAround(vec3 n)
+{
+    float s = n.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (s + n.z);
+    float b = n.x * n.y * a;
+    vec3 t = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
+    vec3 bt = vec3(b, s + n.y * n.y * a, -n.y);
+    return mat3(t, bt, n);
+}

@@ -1,0 +1,20 @@
+#version 450 core
+// The environment behind the scene: the base cube (sharp) or a prefiltered level (blurred).
+#include "../shared/Bindings.h"
+#include "../shared/FrameData.h"
+#include "../common/math.glsl"
+#include "ibl.glsl"
+
+layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
+layout(binding = 0) uniform samplerCube uSky;
+
+in vec4 vFarPoint;
+layout(location = 0) out vec4 outColor;
+
+void main()
+{
+    vec3 direction = normalize(vFarPoint.xyz / vFarPoint.w - frame.cameraPosition.xyz);
+    vec3 d = toEnvironment(direction);
+    vec3 radiance = environment.params.z < 0.0 ? textureLod(uSky, d, 0.0).rgb : textureLod(uPrefiltered, d, environment.params.z).rgb;
+    outColor = vec4(min(radiance * environment.params.x, vec3(65504.0)), 1.0);
+}

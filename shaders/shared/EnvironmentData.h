@@ -1,0 +1,17 @@
+// Image-based lighting constants (uniform buffer, std140).
+#include "Prelude.h"
+
+SPECULA_SHARED_BEGIN
+
+struct EnvironmentData {
+    vec4 sh[9];                 // order-2 SH of the environment radiance (rgb), environment space
+    mat4 worldToEnvironment;    // rotation about +Y taking world directions to the map's own
+    mat4 inverseViewProjection; // for the skybox's view rays
+    vec4 params;                // x intensity, y prefiltered mip count, z skybox lod (-1 = sharp), w skybox on
+};
+
+SPECULA_SHARED_END
+
+#ifdef __cplusplus
+static_assert(sizeof(specula::shared::EnvironmentData) == 9 * 16 + 2 * 64 + 16);
+#endif

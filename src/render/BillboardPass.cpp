@@ -1,0 +1,320 @@
+#include "render/BillboardPass.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <numeric>
+
+#include "core/Log.h"
+#include "gl/Buffer.h"
+#include "gl/Debug.h"
+#include "gl/Program.h"
+#include "gl/State.h"
+#include "gl/Texture.h"
+#include "gl/VertexArray.h"
+#include "render/Billboard.h"
+#include "shaders/shared/BillboardData.h"
+#include "shaders/shared/Bindings.h"
+
+namespace specula::render {
+
+static_assert(uint32_t(scene::BillboardKind::PointSprite) == SPECULA_BILLBOARD_POINT_SPRITE);
+static_assert(uint32_t(scene::BillboardKind::AxisAligned) == SPECULA_BILLBOARD_AXIS_ALIGNED);
+static_assert(uint32_t(scene::BillboardKind::ArbitraryAxis) == SPECULA_BILLBOARD_ARBITRARY_AXIS);
+
+scene::BillboardGroup makeLightGizmos(const std::vector<PlacedLight>& lights, const scene::Bounds& sceneBounds)
+{
+    scene::BillboardGroup group;
+    group.name = "light gizmos";
+    group.kind = scene::BillboardKind::PointSprite;
+    group.size = glm::vec2(kGizmoSizePixels);
+    group.sizeInPixels = true;
+    group.tint = glm::vec3(kGizmoRadiance);
+    group.alphaMode = scene::AlphaMode::Blend;
+    group.sprite = scene::BuiltinSprite::Disc;
+    const glm::vec3 center = sceneBounds.empty() ? glm::vec3(0.0f) : sceneBounds.center();
+    const float radius = sceneBounds.empty() ? 1.0f : std::max(sceneBounds.radius(), 1e-3f);
+    for (const PlacedLight& placed : lights) {
+        scene::Billboard b;
+        b.tint = placed.light.color;
+        b.position = placed.position;
+        if (placed.light.type == scene::Light::Type::Directional) {
+            const float length = glm::length(placed.direction);
+            const glm::vec3 direction = length > 0.0f ? placed.direction / length : glm::vec3(0, 0, -1);
+            b.position = center - direction * radius;
+        }
+        group.billboards.push_back(b);
+    }
+    return group;
+}
+
+namespace {
+
+/// What one draw of a group needs besides its instances.
+struct GroupState {
+    scene::BillboardKind kind = scene::BillboardKind::PointSprite;
+    glm::vec2 size{1.0f};
+    glm::vec2 anchor{0.5f};
+    bool sizeInPixels = false;
+    scene::AlphaMode alphaMode = scene::AlphaMode::Mask;
+    float alphaCutoff = 0.5f;
+    const gl::Texture* texture = nullptr;
+    uint32_t first = 0; ///< Opaque and Mask groups: their range in the static part of the buffer
+    uint32_t count = 0;
+};
+
+shared::GpuBillboard pack(const scene::BillboardGroup& group, const scene::Billboard& b)
+{
+    return {glm::vec4(b.position, b.scale), glm::vec4(group.tint * b.tint, 0.0f), glm::vec4(b.axis, 0.0f)};
+}
+
+} // namespace
+
+struct BillboardPass::Impl {
+    gl::Program program;
+    int uFirstInstance = -1, uKind = -1, uSize = -1, uAnchor = -1, uSizeInPixels = -1, uViewportHeight = -1,
+        uAlphaCutoff = -1, uBlend = -1;
+    gl::VertexArray quad{"billboard quad"}; // vertices come from gl_VertexID; GL core still wants a VAO
+    gl::Sampler sampler;
+    std::array<gl::Texture, 2> builtins; // by scene::BuiltinSprite
+    std::map<int, gl::Texture> images;   // by scene image index
+
+    std::vector<GroupState> groups; // one per scene group
+    GroupState gizmos;
+    // Blended billboards stay on the CPU and are sorted every frame into the dynamic part.
+    std::vector<shared::GpuBillboard> blended;
+    std::vector<uint32_t> blendedGroup;
+    scene::Bounds sceneBounds;
+
+    // One storage buffer: [static: Opaque and Mask groups | dynamic: sorted blended + gizmos].
+    gl::Buffer instances;
+    uint32_t dynamicFirst = 0;
+    uint32_t dynamicCapacity = 0;
+
+    Impl()
+    {
+        gl::SamplerDesc desc;
+        // Clamp: a sprite is one picture, and repeating would bleed the opposite edge into it.
+        desc.wrapS = desc.wrapT = gl::Wrap::ClampToEdge;
+        sampler = gl::Sampler(desc, "billboard sprite");
+    }
+
+    gl::Program& ensureProgram()
+    {
+        if (!program) {
+            program = gl::Program({.vertex = "billboard/billboard.vert", .fragment = "billboard/billboard.frag", .label = "billboards"});
+            uFirstInstance = program.uniformLocation("uFirstInstance");
+            uKind = program.uniformLocation("uKind");
+            uSize = program.uniformLocation("uSize");
+            uAnchor = program.uniformLocation("uAnchor");
+            uSizeInPixels = program.uniformLocation("uSizeInPixels");
+            uViewportHeight = program.uniformLocation("uViewportHeight");
+            uAlphaCutoff = program.uniformLocation("uAlphaCutoff");
+            uBlend = program.uniformLocation("uBlend");
+        }
+        return program;
+    }
+
+    static gl::Texture makeTexture(const scene::Image& image, const std::string& label)
+    {
+        gl::TextureDesc desc;
+        desc.format = gl::Format::SRGB8_ALPHA8; // sprite colours are sRGB like base colour textures
+        desc.width = image.width;
+        desc.height = image.height;
+        desc.levels = 0;
+        desc.label = label;
+        gl::Texture texture(desc);
+        // Top row first, so t = 0 is the image's top (the shader samples at 1 − v).
+        texture.upload(0, 0, 4, gl::PixelType::UnsignedByte, image.pixels.data());
+        texture.generateMipmaps();
+        return texture;
+    }
+
+    const gl::Texture* builtin(scene::BuiltinSprite sprite)
+    {
+        gl::Texture& slot = builtins[size_t(sprite) < builtins.size() ? size_t(sprite) : 0];
+        if (!slot) {
+            const scene::Image image = makeBuiltinSprite(sprite, 64);
+            slot = makeTexture(image, image.name);
+        }
+        return &slot;
+    }
+
+    const gl::Texture* sprite(const scene::Scene& scene, const scene::BillboardGroup& group)
+    {
+        if (group.image < 0) return builtin(group.sprite);
+        if (size_t(group.image) >= scene.images.size()) {
+            log::warn("billboard group '{}': image {} does not exist, using the built-in sprite", group.name, group.image);
+            return builtin(group.sprite);
+        }
+        const scene::Image& image = scene.images[size_t(group.image)];
+        if (image.width <= 0 || image.height <= 0 || image.pixels.size() < size_t(image.width) * size_t(image.height) * 4) {
+            log::warn("billboard group '{}': image '{}' has no pixels, using the built-in sprite", group.name, image.name);
+            return builtin(group.sprite);
+        }
+        auto it = images.find(group.image);
+        if (it == images.end())
+            it = images.emplace(group.image, makeTexture(image, image.name.empty() ? "billboard image" : image.name)).first;
+        return &it->second;
+    }
+
+    static GroupState describe(const scene::BillboardGroup& group, const gl::Texture* texture)
+    {
+        GroupState g;
+        g.kind = group.kind;
+        g.size = group.size;
+        g.anchor = group.anchor;
+        g.sizeInPixels = group.sizeInPixels;
+        g.alphaMode = group.alphaMode;
+        g.alphaCutoff = group.alphaCutoff;
+        g.texture = texture;
+        g.count = uint32_t(group.billboards.size());
+        return g;
+    }
+
+    void setState(gl::State& state, const GroupState& g, int viewportHeight)
+    {
+        state.bindTexture(SPECULA_UNIT_SPRITE, *g.texture);
+        state.bindSampler(SPECULA_UNIT_SPRITE, &sampler);
+        program.set(uKind, uint32_t(g.kind));
+        program.set(uSize, g.size);
+        program.set(uAnchor, g.anchor);
+        program.set(uSizeInPixels, int(g.sizeInPixels));
+        program.set(uViewportHeight, float(viewportHeight));
+        // Only cutout discards; -1 keeps every texel (alpha is never negative).
+        program.set(uAlphaCutoff, g.alphaMode == scene::AlphaMode::Mask ? g.alphaCutoff : -1.0f);
+        program.set(uBlend, int(g.alphaMode == scene::AlphaMode::Blend));
+    }
+
+    void begin(gl::State& state)
+    {
+        state.useProgram(ensureProgram());
+        state.bindVertexArray(quad);
+        gl::bindStorageBuffer(SPECULA_BINDING_BILLBOARDS, instances);
+    }
+
+    /// Sorts `records` (of `groupOf` groups) back to front, uploads them at `offset` in the
+    /// dynamic part and draws each run of one group with one call. Returns triangles.
+    size_t drawSorted(gl::State& state, const View& view, int viewportHeight, const std::vector<shared::GpuBillboard>& records,
+                      const std::vector<const GroupState*>& groupOf, uint32_t offset)
+    {
+        if (records.empty()) return 0;
+        std::vector<uint32_t> order(records.size());
+        std::iota(order.begin(), order.end(), 0u);
+        std::vector<float> depth(records.size());
+        for (size_t i = 0; i < records.size(); ++i) depth[i] = (view.view * glm::vec4(glm::vec3(records[i].positionScale), 1.0f)).z;
+        // View-space z is negative in front of the camera: most negative = farthest = first.
+        std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return depth[a] < depth[b]; });
+        std::vector<shared::GpuBillboard> sorted(records.size());
+        for (size_t i = 0; i < order.size(); ++i) sorted[i] = records[order[i]];
+        const uint32_t first = dynamicFirst + offset;
+        instances.update(size_t(first) * sizeof(shared::GpuBillboard), sorted.size() * sizeof(shared::GpuBillboard), sorted.data());
+
+        size_t triangles = 0;
+        for (size_t start = 0; start < order.size();) {
+            const GroupState* g = groupOf[order[start]];
+            size_t end = start + 1;
+            while (end < order.size() && groupOf[order[end]] == g) ++end;
+            setState(state, *g, viewportHeight);
+            program.set(uFirstInstance, uint32_t(first + start));
+            state.drawTrianglesInstanced(6, uint32_t(end - start));
+            triangles += 2 * (end - start);
+            start = end;
+        }
+        return triangles;
+    }
+};
+
+BillboardPass::BillboardPass() : mImpl(std::make_unique<Impl>()) {}
+BillboardPass::~BillboardPass() = default;
+
+void BillboardPass::prepare()
+{
+    mImpl->ensureProgram();
+}
+
+void BillboardPass::setScene(const scene::Scene& scene)
+{
+    Impl& p = *mImpl;
+    p.groups.clear();
+    p.images.clear();
+    p.blended.clear();
+    p.blendedGroup.clear();
+    p.sceneBounds = scene.worldBounds();
+
+    std::vector<shared::GpuBillboard> staticRecords;
+    for (const scene::BillboardGroup& group : scene.billboards) {
+        GroupState g = Impl::describe(group, p.sprite(scene, group));
+        if (group.alphaMode == scene::AlphaMode::Blend) {
+            for (const scene::Billboard& b : group.billboards) {
+                p.blended.push_back(pack(group, b));
+                p.blendedGroup.push_back(uint32_t(p.groups.size()));
+            }
+        } else {
+            g.first = uint32_t(staticRecords.size());
+            for (const scene::Billboard& b : group.billboards) staticRecords.push_back(pack(group, b));
+        }
+        p.groups.push_back(g);
+    }
+    p.gizmos = Impl::describe(makeLightGizmos({}, {}), p.builtin(scene::BuiltinSprite::Disc));
+
+    // The dynamic part holds the blended billboards and, separately after them, up to one
+    // gizmo per light the light buffer can hold.
+    p.dynamicFirst = uint32_t(staticRecords.size());
+    p.dynamicCapacity = uint32_t(p.blended.size()) + SPECULA_MAX_LIGHTS;
+    p.instances = gl::Buffer((size_t(p.dynamicFirst) + p.dynamicCapacity) * sizeof(shared::GpuBillboard), nullptr, "billboards");
+    p.instances.update(0, staticRecords.size() * sizeof(shared::GpuBillboard), staticRecords.data());
+    log::debug("billboards: {} groups, {} static and {} blended billboards", p.groups.size(), staticRecords.size(), p.blended.size());
+}
+
+size_t BillboardPass::drawOpaque(gl::State& state, int viewportHeight)
+{
+    Impl& p = *mImpl;
+    const bool any = std::any_of(p.groups.begin(), p.groups.end(),
+                                 [](const GroupState& g) { return g.alphaMode != scene::AlphaMode::Blend && g.count > 0; });
+    if (!any) return 0;
+    gl::DebugGroup debugGroup("billboards (opaque)");
+    p.begin(state);
+    // No culling: a sprite seen from behind (an arbitrary-axis one, or past the pole) still shows.
+    state.apply({.cull = gl::CullMode::None});
+    size_t triangles = 0;
+    for (const GroupState& g : p.groups) {
+        if (g.alphaMode == scene::AlphaMode::Blend || g.count == 0) continue;
+        p.setState(state, g, viewportHeight);
+        p.program.set(p.uFirstInstance, g.first);
+        state.drawTrianglesInstanced(6, g.count);
+        triangles += 2 * size_t(g.count);
+    }
+    return triangles;
+}
+
+size_t BillboardPass::drawBlended(gl::State& state, const View& view, int viewportHeight, const LightBuffer* gizmoLights)
+{
+    Impl& p = *mImpl;
+    const bool gizmos = gizmoLights && gizmoLights->count() > 0;
+    if (!p.instances || (p.blended.empty() && !gizmos)) return 0; // no scene yet, or nothing to draw
+    gl::DebugGroup debugGroup("billboards (blended)");
+    p.begin(state);
+    size_t triangles = 0;
+    if (!p.blended.empty()) {
+        std::vector<const GroupState*> groupOf(p.blended.size());
+        for (size_t i = 0; i < groupOf.size(); ++i) groupOf[i] = &p.groups[p.blendedGroup[i]];
+        state.apply({.noDepthWrite = true, .cull = gl::CullMode::None, .blend = gl::BlendMode::Alpha});
+        triangles += p.drawSorted(state, view, viewportHeight, p.blended, groupOf, 0);
+    }
+    if (gizmos) {
+        std::vector<PlacedLight> lights;
+        const int count = std::min(gizmoLights->count(), int(SPECULA_MAX_LIGHTS));
+        for (int i = 0; i < count; ++i) lights.push_back(gizmoLights->light(i));
+        const scene::BillboardGroup group = makeLightGizmos(lights, p.sceneBounds);
+        std::vector<shared::GpuBillboard> records;
+        for (const scene::Billboard& b : group.billboards) records.push_back(pack(group, b));
+        const std::vector<const GroupState*> groupOf(records.size(), &p.gizmos);
+        // Gizmos mark where lights are, so they show through walls and lamp shades: no depth test.
+        state.apply({.noDepthTest = true, .noDepthWrite = true, .cull = gl::CullMode::None, .blend = gl::BlendMode::Alpha});
+        triangles += p.drawSorted(state, view, viewportHeight, records, groupOf, uint32_t(p.blended.size()));
+    }
+    return triangles;
+}
+
+} // namespace specula::render

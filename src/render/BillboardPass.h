@@ -1,0 +1,62 @@
+#pragma once
+// The billboard pass: a scene's billboard groups and the light gizmos, drawn instanced (one
+// draw call per group) into the forward pass's HDR target. The basis is built in the vertex
+// shader (shaders/billboard/basis.glsl) with the formulas of render/Billboard.h.
+//
+// Order within the forward pass (Renderer::Impl::drawScene):
+//   1. opaque glTF surfaces
+//   2. drawOpaque(): groups with AlphaMode::Mask (cutout) or Opaque; depth-tested and written
+//   3. blended glTF surfaces, sorted back to front
+//   4. drawBlended(): billboards of AlphaMode::Blend groups, all groups sorted together back to
+//      front by view depth (consecutive billboards of one group share a draw), depth-tested,
+//      not written; then the light gizmos, on top of everything.
+// Blended billboards and blended glTF surfaces are sorted apart, so a blended sprite behind a
+// blended glTF surface is drawn over it; scenes mixing the two should keep them apart.
+#include <memory>
+#include <vector>
+
+#include "render/LightBuffer.h"
+#include "render/View.h"
+#include "scene/Scene.h"
+
+namespace specula::gl {
+class State;
+}
+
+namespace specula::render {
+
+/// Light gizmos: a disc of this many pixels across, emitting the light's colour × this radiance
+/// (cd/m²; bright enough to read as a light and to bloom, whatever the light's intensity).
+constexpr float kGizmoSizePixels = 24.0f;
+constexpr float kGizmoRadiance = 6.0f;
+
+/// The light gizmos as a billboard group: one point sprite per light, tinted with its colour,
+/// kGizmoSizePixels across, blended. Point and spot lights sit at their position; a directional
+/// light has none, so its gizmo sits where its light comes from, on the bounding sphere of
+/// `sceneBounds` (centre − direction × radius; radius 1 around the origin for empty bounds).
+scene::BillboardGroup makeLightGizmos(const std::vector<PlacedLight>& lights, const scene::Bounds& sceneBounds);
+
+class BillboardPass {
+public:
+    BillboardPass();
+    ~BillboardPass();
+    BillboardPass(const BillboardPass&) = delete;
+    BillboardPass& operator=(const BillboardPass&) = delete;
+
+    /// Uploads the scene's billboard groups, their sprites, and remembers its bounds (gizmos).
+    void setScene(const scene::Scene& scene);
+    /// Compiles the program now rather than on first use.
+    void prepare();
+
+    /// Draws the cutout and opaque groups into the bound target; returns triangles submitted.
+    size_t drawOpaque(gl::State& state, int viewportHeight);
+    /// Draws the blended billboards back to front, then the gizmos of `gizmoLights` (if not
+    /// null) on top; returns triangles submitted.
+    size_t drawBlended(gl::State& state, const View& view, int viewportHeight, const LightBuffer* gizmoLights);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> mImpl;
+};
+
+} // namespace specula::render

@@ -1,0 +1,164 @@
+#include "render/BloomPass.h"
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/Debug.h"
+#include "gl/Program.h"
+#include "gl/State.h"
+#include "gl/Texture.h"
+#include "shaders/shared/Bindings.h"
+
+namespace specula::render {
+namespace {
+
+constexpr int kMaxLevels = 8;
+constexpr int kGroupSize = 8; // local_size of the bloom shaders
+
+uint32_t groups(int size)
+{
+    return uint32_t((size + kGroupSize - 1) / kGroupSize);
+}
+
+struct DownsampleProgram {
+    gl::Program program;
+    int targetSize = -1, sourceTexel = -1, threshold = -1;
+};
+
+struct UpsampleProgram {
+    gl::Program program;
+    int targetSize = -1, lowerTexel = -1, radius = -1, keep = -1, scale = -1;
+};
+
+} // namespace
+
+struct BloomPass::Impl {
+    std::map<std::string, DownsampleProgram> downsample; ///< by variant: "first", "first karis", "rest"
+    UpsampleProgram upsample;
+    gl::Sampler linearClamp{{.mipFilter = gl::MipFilter::None, .wrapS = gl::Wrap::ClampToEdge,
+                             .wrapT = gl::Wrap::ClampToEdge, .wrapR = gl::Wrap::ClampToEdge},
+                            "bloom bilinear clamp"};
+    std::vector<gl::Texture> levels; ///< levels[k] is level k + 1 (level 0 is the frame)
+    int width = 0, height = 0;
+
+    DownsampleProgram& downsampleProgram(bool first, bool karis)
+    {
+        const std::string key = !first ? "rest" : karis ? "first karis" : "first";
+        DownsampleProgram& p = downsample[key];
+        if (!p.program) {
+            std::vector<std::string> defines;
+            if (first) defines.push_back("FIRST_LEVEL");
+            if (first && karis) defines.push_back("KARIS_AVERAGE");
+            p.program = gl::Program({.compute = "post/bloom_downsample.comp", .defines = defines, .label = "bloom down " + key});
+            p.targetSize = p.program.uniformLocation("uTargetSize");
+            p.sourceTexel = p.program.uniformLocation("uSourceTexel");
+            p.threshold = p.program.uniformLocation("uThreshold");
+        }
+        return p;
+    }
+
+    UpsampleProgram& upsampleProgram()
+    {
+        if (!upsample.program) {
+            upsample.program = gl::Program({.compute = "post/bloom_upsample.comp", .label = "bloom up"});
+            upsample.targetSize = upsample.program.uniformLocation("uTargetSize");
+            upsample.lowerTexel = upsample.program.uniformLocation("uLowerTexel");
+            upsample.radius = upsample.program.uniformLocation("uRadius");
+            upsample.keep = upsample.program.uniformLocation("uKeep");
+            upsample.scale = upsample.program.uniformLocation("uScale");
+        }
+        return upsample;
+    }
+
+    void ensureLevels(gl::State& state, int w, int h)
+    {
+        if (w == width && h == height) return;
+        width = w;
+        height = h;
+        levels.clear();
+        // Names of deleted textures may be reused: the binding cache must forget them.
+        state.reset();
+        for (int k = 1; k <= levelsFor(w, h, kMaxLevels); ++k) {
+            gl::TextureDesc desc;
+            // Rounded up, so that level k + 1 covers all of level k.
+            desc.width = std::max(1, (w + (1 << k) - 1) >> k);
+            desc.height = std::max(1, (h + (1 << k) - 1) >> k);
+            // Half floats: the glow of a 65504 pixel must not become Inf, and an 11-bit float's
+            // 6-bit mantissa would cost the 1% energy accuracy.
+            desc.format = gl::Format::RGBA16F;
+            desc.label = "bloom level " + std::to_string(k);
+            levels.emplace_back(desc);
+        }
+    }
+};
+
+BloomPass::BloomPass() : mImpl(std::make_unique<Impl>()) {}
+BloomPass::~BloomPass() = default;
+
+int BloomPass::levelsFor(int width, int height, int requested)
+{
+    int halvings = 0;
+    for (int size = std::max(width, height); size > 1; size = (size + 1) / 2) ++halvings;
+    return std::clamp(requested, 0, std::min(kMaxLevels, halvings));
+}
+
+void BloomPass::prepare(const BloomSettings& settings)
+{
+    mImpl->downsampleProgram(true, settings.fireflyFilter);
+    mImpl->downsampleProgram(false, false);
+    mImpl->upsampleProgram();
+}
+
+void BloomPass::apply(gl::State& state, const gl::Texture& hdr, const BloomSettings& settings, float exposure,
+                      bool glowOnly)
+{
+    Impl& r = *mImpl;
+    const int w = hdr.width(), h = hdr.height();
+    const int levels = levelsFor(w, h, settings.levels);
+    if (levels == 0) return;
+    r.ensureLevels(state, w, h);
+
+    // Down: frame → level 1 → … → level `levels`.
+    for (int k = 1; k <= levels; ++k) {
+        const gl::Texture& source = k == 1 ? hdr : r.levels[size_t(k - 2)];
+        const gl::Texture& target = r.levels[size_t(k - 1)];
+        DownsampleProgram& p = r.downsampleProgram(k == 1, settings.fireflyFilter);
+        state.useProgram(p.program);
+        p.program.set(p.targetSize, glm::ivec2(target.width(), target.height()));
+        p.program.set(p.sourceTexel, glm::vec2(1.0f / float(source.width()), 1.0f / float(source.height())));
+        if (k == 1)
+            p.program.set(p.threshold, glm::vec4(settings.threshold, settings.knee * settings.threshold, exposure, 0.0f));
+        state.bindTexture(SPECULA_UNIT_POST_INPUT, source);
+        state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearClamp);
+        state.bindImage(SPECULA_IMAGE_POST_OUTPUT, target, 0, gl::ImageAccess::WriteOnly);
+        state.dispatchCompute(groups(target.width()), groups(target.height()));
+        state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::Image);
+    }
+
+    // Up: level `levels` → … → level 1, each adding the magnified level below; then the frame.
+    UpsampleProgram& p = r.upsampleProgram();
+    state.useProgram(p.program);
+    p.program.set(p.radius, std::max(settings.radius, 0.0f));
+    for (int k = levels - 1; k >= 0; --k) {
+        const gl::Texture& lower = r.levels[size_t(k)];
+        const gl::Texture& target = k == 0 ? hdr : r.levels[size_t(k - 1)];
+        const bool frame = k == 0;
+        p.program.set(p.targetSize, glm::ivec2(target.width(), target.height()));
+        p.program.set(p.lowerTexel, glm::vec2(1.0f / float(lower.width()), 1.0f / float(lower.height())));
+        p.program.set(p.keep, frame && glowOnly ? 0.0f : 1.0f);
+        // Level 1 now holds the sum of `levels` blurred copies of the frame.
+        p.program.set(p.scale, frame ? std::max(settings.intensity, 0.0f) / float(levels) : 1.0f);
+        state.bindTexture(SPECULA_UNIT_POST_INPUT, lower);
+        state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearClamp);
+        state.bindImage(SPECULA_IMAGE_POST_OUTPUT, target, 0, gl::ImageAccess::ReadWrite);
+        state.dispatchCompute(groups(target.width()), groups(target.height()));
+        state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::Image | gl::Barrier::TextureUpdate |
+                            gl::Barrier::Framebuffer);
+    }
+}
+
+} // namespace specula::render

@@ -1,0 +1,54 @@
+#include "render/FxaaPass.h"
+
+#include <glm/glm.hpp>
+
+#include "gl/Framebuffer.h"
+#include "gl/Program.h"
+#include "gl/State.h"
+#include "gl/Texture.h"
+#include "gl/VertexArray.h"
+#include "shaders/shared/Bindings.h"
+
+namespace specula::render {
+
+struct FxaaPass::Impl {
+    gl::Program program;
+    int texel = -1;
+    // FXAA re-samples between pixels: bilinear, and clamped so edges do not wrap around.
+    gl::Sampler linearClamp{{.mipFilter = gl::MipFilter::None, .wrapS = gl::Wrap::ClampToEdge,
+                             .wrapT = gl::Wrap::ClampToEdge, .wrapR = gl::Wrap::ClampToEdge},
+                            "fxaa bilinear clamp"};
+    gl::VertexArray emptyVertexArray{"fxaa fullscreen triangle"};
+
+    void ensureProgram()
+    {
+        if (program) return;
+        program = gl::Program({.vertex = "post/fullscreen.vert", .fragment = "post/fxaa.frag", .label = "fxaa"});
+        texel = program.uniformLocation("uTexel");
+    }
+};
+
+FxaaPass::FxaaPass() : mImpl(std::make_unique<Impl>()) {}
+FxaaPass::~FxaaPass() = default;
+
+void FxaaPass::prepare()
+{
+    mImpl->ensureProgram();
+}
+
+void FxaaPass::apply(gl::State& state, const gl::Texture& input, const gl::Framebuffer& target)
+{
+    Impl& r = *mImpl;
+    r.ensureProgram();
+    state.bindFramebuffer(&target);
+    state.viewport(0, 0, input.width(), input.height());
+    state.apply({.noDepthTest = true, .noDepthWrite = true, .framebufferSrgb = true});
+    state.useProgram(r.program);
+    r.program.set(r.texel, glm::vec2(1.0f / float(input.width()), 1.0f / float(input.height())));
+    state.bindTexture(SPECULA_UNIT_POST_INPUT, input);
+    state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearClamp);
+    state.bindVertexArray(r.emptyVertexArray);
+    state.drawTriangles(3, false);
+}
+
+} // namespace specula::render

@@ -1,0 +1,31 @@
+#pragma once
+// FXAA 3.11 (Lottes 2011) on the tone-mapped image: an alternative to MSAA (with --msaa 1) or a
+// complement to it (it also smooths edges MSAA cannot see: alpha-tested and shading aliasing).
+#include <memory>
+
+namespace specula::gl {
+class Framebuffer;
+class State;
+class Texture;
+} // namespace specula::gl
+
+namespace specula::render {
+
+class FxaaPass {
+public:
+    FxaaPass();
+    ~FxaaPass();
+    FxaaPass(const FxaaPass&) = delete;
+    FxaaPass& operator=(const FxaaPass&) = delete;
+
+    /// Anti-aliases `input` (an sRGB texture, the tone-mapped frame) into `target` (sRGB) at
+    /// the same size.
+    void apply(gl::State& state, const gl::Texture& input, const gl::Framebuffer& target);
+    void prepare();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> mImpl;
+};
+
+} // namespace specula::render

@@ -1,0 +1,301 @@
+#include "render/ImageBasedLighting.h"
+
+#include <epoxy/gl.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "core/Error.h"
+#include "core/Log.h"
+#include "core/Timer.h"
+#include "gl/Debug.h"
+#include "gl/Program.h"
+#include "gl/Texture.h"
+
+namespace specula::render {
+namespace fs = std::filesystem;
+
+std::string BakeSettings::key() const
+{
+    // v1: bump when a bake shader changes, so stale caches are not reused.
+    return fmt::format("v1-c{}-p{}x{}s{}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples);
+}
+
+std::optional<BakeSettings> bakePreset(std::string_view name)
+{
+    if (name == "default") return BakeSettings{};
+    if (name == "reference") {
+        BakeSettings s;
+        s.name = "reference";
+        s.cubeSize = 512;
+        s.prefilterSize = 128;
+        s.prefilterLevels = 5;
+        s.prefilterSamples = 1024;
+        s.lutSize = 512;
+        s.lutSamples = 1024;
+        return s;
+    }
+    return std::nullopt;
+}
+
+fs::path defaultCacheDirectory()
+{
+    if (const char* dir = std::getenv("SPECULA_CACHE_DIR"); dir && *dir) return dir;
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "specula";
+    if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "specula";
+    return fs::temp_directory_path() / "specula-cache";
+}
+
+namespace {
+
+constexpr char kMagic[8] = {'S', 'P', 'C', 'L', 'I', 'B', 'L', '1'};
+
+int groups(int size)
+{
+    return (size + 7) / 8;
+}
+
+// Cache files: magic, then per texture (levels, faces, size, RGBA16F texels level by level),
+// then optional extra floats. Written to a temporary file and renamed: never half a cache.
+void writeTextures(std::ofstream& out, const gl::Texture& texture)
+{
+    const int32_t header[3] = {texture.levels(), texture.desc().type == gl::TextureType::Cube ? 6 : 1, texture.width()};
+    out.write(reinterpret_cast<const char*>(header), sizeof header);
+    for (int level = 0; level < texture.levels(); ++level) {
+        const size_t count = size_t(texture.width(level)) * size_t(texture.height(level)) * size_t(header[1]) * 4;
+        std::vector<uint16_t> halfs(count);
+        glGetTextureImage(texture.id(), level, GL_RGBA, GL_HALF_FLOAT, GLsizei(count * 2), halfs.data());
+        out.write(reinterpret_cast<const char*>(halfs.data()), std::streamsize(count * 2));
+    }
+}
+
+bool readTexture(std::ifstream& in, gl::Texture& texture, const std::string& label, gl::Format format, int channels)
+{
+    int32_t header[3] = {};
+    if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return false;
+    if (header[0] < 1 || header[0] > 16 || (header[1] != 1 && header[1] != 6) || header[2] < 1 || header[2] > 8192) return false;
+    gl::TextureDesc desc;
+    desc.type = header[1] == 6 ? gl::TextureType::Cube : gl::TextureType::Texture2D;
+    desc.format = format;
+    desc.width = desc.height = header[2];
+    desc.levels = header[0];
+    desc.label = label;
+    gl::Texture t(desc);
+    for (int level = 0; level < header[0]; ++level) {
+        const size_t texels = size_t(t.width(level)) * size_t(t.height(level));
+        std::vector<uint16_t> halfs(texels * size_t(header[1]) * 4);
+        if (!in.read(reinterpret_cast<char*>(halfs.data()), std::streamsize(halfs.size() * 2))) return false;
+        for (int face = 0; face < header[1]; ++face) {
+            const uint16_t* data = halfs.data() + size_t(face) * texels * 4;
+            if (channels == 4) {
+                t.upload(level, face, 4, gl::PixelType::HalfFloat, data);
+            } else {
+                std::vector<uint16_t> packed(texels * size_t(channels));
+                for (size_t i = 0; i < texels; ++i)
+                    for (int c = 0; c < channels; ++c) packed[i * size_t(channels) + size_t(c)] = data[i * 4 + size_t(c)];
+                t.upload(level, face, channels, gl::PixelType::HalfFloat, packed.data());
+            }
+        }
+    }
+    texture = std::move(t);
+    return true;
+}
+
+void writeAtomically(const fs::path& file, const std::function<void(std::ofstream&)>& write)
+{
+    std::error_code ec;
+    fs::create_directories(file.parent_path(), ec);
+    const fs::path temp = file.string() + ".tmp" + std::to_string(::getpid());
+    {
+        std::ofstream out(temp, std::ios::binary);
+        if (!out) {
+            log::warn("cannot write the bake cache {}: not writable; continuing without it", file.string());
+            return;
+        }
+        out.write(kMagic, sizeof kMagic);
+        write(out);
+        if (!out) {
+            out.close();
+            fs::remove(temp, ec);
+            log::warn("cannot write the bake cache {}; continuing without it", file.string());
+            return;
+        }
+    }
+    fs::rename(temp, file, ec);
+    if (ec) fs::remove(temp, ec);
+}
+
+bool checkMagic(std::ifstream& in)
+{
+    char magic[8] = {};
+    return in.read(magic, sizeof magic) && std::memcmp(magic, kMagic, sizeof magic) == 0;
+}
+
+} // namespace
+
+struct ImageBasedLighting::Impl {
+    gl::Program toCube, prefilter, dfgSmith, dfgSchlick;
+    gl::Texture cube, prefiltered;
+    gl::Texture lut[2];
+    Sh9 sh{};
+    bool has = false;
+    fs::path lutCacheDirectory;
+    BakeSettings lutSettings;
+
+    gl::Program& program(gl::Program& p, const char* path, std::vector<std::string> defines = {})
+    {
+        if (!p) p = gl::Program({.compute = path, .defines = std::move(defines), .label = path});
+        return p;
+    }
+
+    void bake(const EnvironmentMap& map, const BakeSettings& s)
+    {
+        gl::DebugGroup group("bake environment");
+        // Source: RGBA32F so values above the half-float range (a real sun) survive until the cube.
+        gl::TextureDesc sourceDesc;
+        sourceDesc.format = gl::Format::RGBA32F;
+        sourceDesc.width = map.width;
+        sourceDesc.height = map.height;
+        sourceDesc.label = "environment source";
+        gl::Texture source(sourceDesc);
+        std::vector<float> rgba(map.texels.size() * 4);
+        for (size_t i = 0; i < map.texels.size(); ++i) {
+            rgba[4 * i] = map.texels[i].x;
+            rgba[4 * i + 1] = map.texels[i].y;
+            rgba[4 * i + 2] = map.texels[i].z;
+            rgba[4 * i + 3] = 1.0f;
+        }
+        source.upload(0, 0, 4, gl::PixelType::Float, rgba.data());
+        glTextureParameteri(source.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+
+        gl::TextureDesc cubeDesc;
+        cubeDesc.type = gl::TextureType::Cube;
+        cubeDesc.format = gl::Format::RGBA16F;
+        cubeDesc.width = cubeDesc.height = s.cubeSize;
+        cubeDesc.levels = 0;
+        cubeDesc.label = "environment cube";
+        cube = gl::Texture(cubeDesc);
+        glUseProgram(program(toCube, "ibl/equirect_to_cube.comp").id());
+        glBindTextureUnit(0, source.id());
+        glBindImageTexture(0, cube.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glDispatchCompute(GLuint(groups(s.cubeSize)), GLuint(groups(s.cubeSize)), 6);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+        cube.generateMipmaps();
+
+        gl::TextureDesc prefilteredDesc = cubeDesc;
+        prefilteredDesc.width = prefilteredDesc.height = s.prefilterSize;
+        prefilteredDesc.levels = s.prefilterLevels;
+        prefilteredDesc.label = "prefiltered environment";
+        prefiltered = gl::Texture(prefilteredDesc);
+        gl::Program& p = program(prefilter, "ibl/prefilter.comp");
+        glUseProgram(p.id());
+        glBindTextureUnit(0, cube.id());
+        p.set(p.uniformLocation("uSamples"), uint32_t(s.prefilterSamples));
+        p.set(p.uniformLocation("uSourceSize"), float(s.cubeSize));
+        p.set(p.uniformLocation("uSourceLevels"), float(cube.levels()));
+        const int roughness = p.uniformLocation("uPerceptualRoughness");
+        for (int level = 0; level < s.prefilterLevels; ++level) {
+            p.set(roughness, float(level) / float(std::max(s.prefilterLevels - 1, 1)));
+            glBindImageTexture(0, prefiltered.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+            const int size = prefiltered.width(level);
+            glDispatchCompute(GLuint(groups(size)), GLuint(groups(size)), 6);
+            log::debug("prefiltered level {}/{} ({}²)", level + 1, s.prefilterLevels, size);
+        }
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glUseProgram(0);
+        sh = projectSh9(map);
+    }
+
+    void bakeLut(int index)
+    {
+        gl::TextureDesc desc;
+        desc.format = gl::Format::RG16F;
+        desc.width = desc.height = lutSettings.lutSize;
+        desc.label = index ? "dfg schlick-ggx" : "dfg smith-ggx";
+        lut[index] = gl::Texture(desc);
+        gl::Program& p = index ? program(dfgSchlick, "ibl/dfg.comp", {"BRDF_G_SCHLICK_GGX"}) : program(dfgSmith, "ibl/dfg.comp");
+        glUseProgram(p.id());
+        p.set(p.uniformLocation("uSamples"), uint32_t(lutSettings.lutSamples));
+        glBindImageTexture(0, lut[index].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
+        glDispatchCompute(GLuint(groups(lutSettings.lutSize)), GLuint(groups(lutSettings.lutSize)), 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
+        glUseProgram(0);
+    }
+};
+
+ImageBasedLighting::ImageBasedLighting() : mImpl(std::make_unique<Impl>()) {}
+ImageBasedLighting::~ImageBasedLighting() = default;
+ImageBasedLighting::ImageBasedLighting(ImageBasedLighting&&) noexcept = default;
+ImageBasedLighting& ImageBasedLighting::operator=(ImageBasedLighting&&) noexcept = default;
+
+bool ImageBasedLighting::hasEnvironment() const { return mImpl->has; }
+const Sh9& ImageBasedLighting::sh() const { return mImpl->sh; }
+const gl::Texture& ImageBasedLighting::cube() const { return mImpl->cube; }
+const gl::Texture& ImageBasedLighting::prefiltered() const { return mImpl->prefiltered; }
+void ImageBasedLighting::setLutCacheDirectory(const fs::path& directory) { mImpl->lutCacheDirectory = directory; }
+
+BakeReport ImageBasedLighting::setEnvironment(const EnvironmentMap& map, const BakeSettings& settings, const fs::path& cacheDirectory)
+{
+    Impl& r = *mImpl;
+    Stopwatch watch;
+    BakeReport report;
+    r.lutSettings = settings;
+    if (!cacheDirectory.empty()) {
+        report.cacheFile = cacheDirectory / fmt::format("env-{}-{}.bin", map.key, settings.key());
+        std::ifstream in(report.cacheFile, std::ios::binary);
+        if (in && checkMagic(in) && readTexture(in, r.cube, "environment cube", gl::Format::RGBA16F, 4) &&
+            readTexture(in, r.prefiltered, "prefiltered environment", gl::Format::RGBA16F, 4) &&
+            in.read(reinterpret_cast<char*>(r.sh.data()), sizeof(Sh9))) {
+            r.has = true;
+            report.fromCache = true;
+            report.milliseconds = watch.elapsedMs();
+            log::info("environment from the bake cache {} in {:.0f} ms", report.cacheFile.string(), report.milliseconds);
+            return report;
+        }
+    }
+    log::info("baking environment ({}x{}, preset {}: cube {}², prefilter {}² x {} levels, {} samples)", map.width, map.height,
+              settings.name, settings.cubeSize, settings.prefilterSize, settings.prefilterLevels, settings.prefilterSamples);
+    r.bake(map, settings);
+    r.has = true;
+    if (!report.cacheFile.empty()) {
+        writeAtomically(report.cacheFile, [&](std::ofstream& out) {
+            writeTextures(out, r.cube);
+            writeTextures(out, r.prefiltered);
+            out.write(reinterpret_cast<const char*>(r.sh.data()), sizeof(Sh9));
+        });
+    }
+    glFinish();
+    report.milliseconds = watch.elapsedMs();
+    log::info("baked environment in {:.0f} ms{}", report.milliseconds,
+              report.cacheFile.empty() ? "" : "; cached as " + report.cacheFile.string());
+    return report;
+}
+
+const gl::Texture& ImageBasedLighting::dfg(bool schlickGgx)
+{
+    Impl& r = *mImpl;
+    const int index = schlickGgx ? 1 : 0;
+    if (r.lut[index]) return r.lut[index];
+    const fs::path file = r.lutCacheDirectory.empty()
+                              ? fs::path()
+                              : r.lutCacheDirectory / fmt::format("dfg-v1-{}-{}-{}.bin", index ? "schlick" : "smith",
+                                                                  r.lutSettings.lutSize, r.lutSettings.lutSamples);
+    if (!file.empty()) {
+        std::ifstream in(file, std::ios::binary);
+        if (in && checkMagic(in) && readTexture(in, r.lut[index], "dfg", gl::Format::RG16F, 2)) return r.lut[index];
+    }
+    Stopwatch watch;
+    r.bakeLut(index);
+    if (!file.empty()) writeAtomically(file, [&](std::ofstream& out) { writeTextures(out, r.lut[index]); });
+    log::debug("DFG table ({}) in {:.0f} ms", index ? "schlick-ggx" : "smith-ggx", watch.elapsedMs());
+    return r.lut[index];
+}
+
+} // namespace specula::render

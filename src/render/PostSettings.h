@@ -1,0 +1,83 @@
+#pragma once
+// Parameters of the post-processing passes (bloom, SSAO, exposure, FXAA, debug views): plain
+// data held by render::FrameSettings. Every pass is off by default, and a pass that is off
+// costs nothing: no target is allocated, no program compiled, no dispatch issued.
+#include <optional>
+#include <string_view>
+
+namespace specula::render {
+
+/// Physically based bloom (Jimenez 2014, "Next Generation Post Processing in Call of Duty:
+/// Advanced Warfare"): the frame plus `intensity` × an energy-preserving wide blur of itself.
+struct BloomSettings {
+    bool enabled = false;
+    /// Fraction of the frame's energy added back as glow: Σ(out − in) = intensity × Σ in.
+    float intensity = 0.04f;
+    /// Down-sampled levels (1–8); each doubles the glow's reach.
+    int levels = 6;
+    /// Spread of the 3×3 tent filter of each up-sampling step, in texels of the level read.
+    float radius = 1.0f;
+    /// 0 = every pixel blooms (the physically based default). Above 0, only what exceeds
+    /// `threshold` (pixel value after the frame's manual exposure) blooms, with a quadratic
+    /// soft knee of half-width `knee` × threshold, for stylised looks.
+    float threshold = 0.0f;
+    float knee = 0.5f;
+    /// Karis's luma-weighted average on the first down-sample, so that a single very bright
+    /// pixel cannot dominate (and flicker) the glow. It deliberately takes energy from
+    /// isolated highlights; with it off bloom conserves energy exactly.
+    bool fireflyFilter = true;
+};
+
+/// Screen-space ambient occlusion (Crytek 2007; the normal-oriented hemisphere of
+/// LearnOpenGL's "SSAO"). Darkens ambient (image-based) light only, never direct light.
+struct SsaoSettings {
+    bool enabled = false;
+    float radius = 0.5f;   ///< hemisphere radius, metres (view space)
+    float bias = 0.025f;   ///< metres a sample must lie behind the surface to occlude
+    float power = 1.5f;    ///< ao = (1 − occluded fraction)^power
+    int samples = 16;      ///< hemisphere samples per pixel, 1–64
+};
+
+/// Automatic exposure from a luminance histogram (compute shader). The measured average
+/// luminance L sets EV100 = log2(L × 100 / 12.5) (reflected-light meter, K = 12.5), clamped
+/// to [minEv100, maxEv100]; exposure = 1 / (1.2 × 2^EV100) (Lagarde & de Rousiers 2014).
+struct AutoExposureSettings {
+    bool enabled = false;
+    float minEv100 = -6.0f;
+    float maxEv100 = 18.0f;
+    /// Fractions of the (non-black) pixels ignored at the dark and the bright end of the
+    /// histogram, so that a few very dark or bright pixels do not swing the exposure.
+    float lowPercentile = 0.10f;
+    float highPercentile = 0.95f;
+    /// Exponential adaptation rates (1/s) towards a brighter and a darker scene.
+    float speedUp = 3.0f;
+    float speedDown = 1.0f;
+    /// Seconds since the previous frame. 0 = converge within this frame (still renders).
+    float deltaTime = 0.0f;
+};
+
+/// FXAA 3.11 (Lottes 2011) on the tone-mapped image, instead of or on top of MSAA.
+struct FxaaSettings {
+    bool enabled = false;
+};
+
+/// Shows one buffer instead of the frame.
+enum class DebugView {
+    None,
+    Ssao,  ///< the blurred ambient occlusion, 1 = unoccluded, as grey (turns SSAO on)
+    Bloom, ///< only the glow bloom adds, exposed and tone mapped like the frame (turns bloom on)
+};
+
+std::optional<DebugView> parseDebugView(std::string_view name);
+const char* debugViewName(DebugView view);
+
+/// EV100 of a camera (Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", camera exposure):
+/// log2(N² / t × 100 / S) for f-number N, shutter time t (seconds) and ISO S.
+float ev100FromCamera(float aperture, float shutterSeconds, float iso);
+/// The scale a camera at `ev100` applies to radiance: 1 / (1.2 × 2^EV100) (ibid.,
+/// saturation-based sensitivity: a luminance of 1.2 × 2^EV100 cd/m² just saturates).
+float exposureFromEv100(float ev100);
+/// EV100 a reflected-light meter (K = 12.5) picks for an average luminance (cd/m²).
+float ev100FromLuminance(float luminance);
+
+} // namespace specula::render
