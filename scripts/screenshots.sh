@@ -2,14 +2,20 @@
 # Renders the README's images with the program itself (docs/images/).
 set -euo pipefail
 BUILD="${1:-build}"
-ASSETS="$(cd "$(dirname "$0")/.." && pwd)/../shared/assets/models"
+SHARED="$(cd "$(dirname "$0")/.." && pwd)/../shared/assets"
 OUT=docs/images
 mkdir -p "$OUT"
 S="$BUILD/specula render"
 $S --width 960 --height 540 -o "$OUT/demo.png"
 $S learnopengl --width 960 --height 540 -o "$OUT/learnopengl.png"
+$S learnopengl-ibl --env "$SHARED/env/lobby_1k.hdr" --width 960 --height 540 -o "$OUT/learnopengl-ibl.png"
+# The core set, lit by the default light rig only (no environment).
 for model in DamagedHelmet/DamagedHelmet.glb WaterBottle/WaterBottle.gltf NormalTangentMirrorTest/NormalTangentMirrorTest.glb \
              AlphaBlendModeTest/AlphaBlendModeTest.glb TextureSettingsTest/TextureSettingsTest.glb OrientationTest/OrientationTest.glb; do
   name=$(basename "$model"); name=${name%.*}
-  $S "$ASSETS/$model" --width 480 --height 360 -o "$OUT/$name.png"
+  $S "$SHARED/models/$model" --env none --width 480 --height 360 -o "$OUT/$name.png"
 done
+# Image-based lighting from real HDRs.
+$S "$SHARED/models/DamagedHelmet/DamagedHelmet.glb" --env "$SHARED/env/venice_1k.hdr" --width 480 --height 360 -o "$OUT/DamagedHelmet-venice.png"
+$S "$SHARED/models/WaterBottle/WaterBottle.gltf" --env "$SHARED/env/studio_1k.hdr" --width 480 --height 360 -o "$OUT/WaterBottle-studio.png"
+$S --env "$SHARED/env/sunset_1k.hdr" --width 480 --height 360 -o "$OUT/demo-sunset.png"

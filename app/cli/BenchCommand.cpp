@@ -98,7 +98,9 @@ int runBench(const BenchArgs& args)
         const double coldMs = cold.ms;
         double warmMs = coldMs;
         if (hasEnvironment) {
-            cold = {};
+            // GL objects go before their context.
+            cold.renderer.reset();
+            cold.context.reset();
             cold = start(); // the same cache directory: the bake is read back
             warmMs = cold.ms;
         }

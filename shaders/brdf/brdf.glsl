@@ -11,15 +11,19 @@
 struct SurfaceBrdf {
     vec3 diffuseColor;        // c_diff = baseColor * (1 - metallic)
     vec3 f0;                  // mix(0.04, baseColor, metallic)
+    float f90;                // 1, or KHR_materials_specular's factor for the dielectric part
     float perceptualRoughness;
     float alpha;              // perceptualRoughness^2
 };
 
-SurfaceBrdf makeSurfaceBrdf(vec3 baseColor, float metallic, float perceptualRoughness)
+// KHR_materials_specular: the dielectric F0 is min(0.04 * specularColor, 1) * specularFactor
+// and its F90 is specularFactor (both 1 without the extension); metals keep F0 = base colour.
+SurfaceBrdf makeSurfaceBrdf(vec3 baseColor, float metallic, float perceptualRoughness, vec4 specular)
 {
     SurfaceBrdf s;
     s.diffuseColor = baseColor * (1.0 - metallic);
-    s.f0 = mix(vec3(0.04), baseColor, metallic);
+    s.f0 = mix(min(vec3(0.04) * specular.rgb, vec3(1.0)) * specular.a, baseColor, metallic);
+    s.f90 = mix(specular.a, 1.0, metallic);
     s.perceptualRoughness = perceptualRoughness;
     s.alpha = perceptualRoughness * perceptualRoughness;
     return s;
@@ -34,7 +38,7 @@ void evaluateBrdfLobes(SurfaceBrdf s, vec3 n, vec3 v, vec3 l, out vec3 diffuse, 
     float NoL = saturate(dot(n, l));
     float NoH = saturate(dot(n, h));
     float VoH = saturate(dot(v, h));
-    vec3 F = F_Schlick(s.f0, VoH);
+    vec3 F = F_Schlick(s.f0, s.f90, VoH);
     float D = D_GGX(NoH, s.alpha);
 #if defined(BRDF_G_SCHLICK_GGX)
     float V = V_SchlickGGX(NoV, NoL, s.perceptualRoughness);

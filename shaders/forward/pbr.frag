@@ -96,7 +96,7 @@ void main()
 #endif
 
     vec3 v = normalize(frame.cameraPosition.xyz - vWorldPosition);
-    SurfaceBrdf surface = makeSurfaceBrdf(baseColor.rgb, metallic, perceptualRoughness);
+    SurfaceBrdf surface = makeSurfaceBrdf(baseColor.rgb, metallic, perceptualRoughness, material.specular);
 
     float NoV = max(dot(n, v), 1e-4); // 1e-4: normal-mapped texels can face away from the viewer
 
@@ -107,6 +107,8 @@ void main()
     // Multiple-Scattering Microfacet Model for Real-Time Image-based Lighting"; Filament).
     vec2 dfg = texture(uDfg, vec2(NoV, perceptualRoughness)).rg;
     vec3 energyCompensation = 1.0 + surface.f0 * (1.0 / max(dfg.x + dfg.y, 1e-4) - 1.0);
+    // With KHR_materials_specular's F90 < 1 the split sum's grazing term scales with it.
+    dfg.y *= surface.f90;
 #else
     const vec3 energyCompensation = vec3(1.0);
 #endif

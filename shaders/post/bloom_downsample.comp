@@ -14,7 +14,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-// Bilinear, clamp to edge: the frame continues its border rather than fading to black.
+// Bilinear, mirrored at the border (see BloomPass.cpp: keeps the energy of edge pixels).
 layout(binding = SPECULA_UNIT_POST_INPUT) uniform sampler2D uSource;
 layout(binding = SPECULA_IMAGE_POST_OUTPUT, rgba16f) uniform writeonly image2D uTarget;
 
@@ -60,7 +60,7 @@ void main()
     if (any(greaterThanEqual(p, uTargetSize))) return;
     // Target texel p covers source texels 2p and 2p + 1: its centre is their shared corner.
     // Target sizes are rounded up, so an odd last row or column of the source still has a
-    // texel below it (which reads the clamped edge for its missing half).
+    // texel below it (which reads the mirrored edge for its missing half).
     vec2 c = vec2(2 * p + 1) * uSourceTexel;
 
     vec3 a = tap(c, vec2(-2.0, -2.0));

@@ -24,10 +24,11 @@ struct GpuMaterial {
     uvec4 flags;          // x SPECULA_MATERIAL_* bits; y texCoord sets, 2 bits per texture
                           // (base colour, metallic-roughness, normal, occlusion, emissive)
     vec4 uvTransform[10]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
+    vec4 specular;        // KHR_materials_specular: rgb specularColorFactor, a specularFactor
 };
 
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::GpuMaterial) == 15 * 16);
+static_assert(sizeof(specula::shared::GpuMaterial) == 16 * 16);
 #endif

@@ -39,9 +39,14 @@ struct UpsampleProgram {
 struct BloomPass::Impl {
     std::map<std::string, DownsampleProgram> downsample; ///< by variant: "first", "first karis", "rest"
     UpsampleProgram upsample;
-    gl::Sampler linearClamp{{.mipFilter = gl::MipFilter::None, .wrapS = gl::Wrap::ClampToEdge,
-                             .wrapT = gl::Wrap::ClampToEdge, .wrapR = gl::Wrap::ClampToEdge},
-                            "bloom bilinear clamp"};
+    // Bilinear, mirrored at the border: the frame continues as its own reflection. Every
+    // filter here is symmetric and each level's border falls on a texel border of the level
+    // above, so the reflected energy is exactly what would have left the image: the glow of a
+    // light at the edge keeps its energy. (Clamping to the edge instead repeats the border
+    // texel at every level, and the glow of an edge pixel grows several times over.)
+    gl::Sampler linearMirror{{.mipFilter = gl::MipFilter::None, .wrapS = gl::Wrap::MirroredRepeat,
+                              .wrapT = gl::Wrap::MirroredRepeat, .wrapR = gl::Wrap::MirroredRepeat},
+                             "bloom bilinear mirror"};
     std::vector<gl::Texture> levels; ///< levels[k] is level k + 1 (level 0 is the frame)
     int width = 0, height = 0;
 
@@ -133,7 +138,7 @@ void BloomPass::apply(gl::State& state, const gl::Texture& hdr, const BloomSetti
         if (k == 1)
             p.program.set(p.threshold, glm::vec4(settings.threshold, settings.knee * settings.threshold, exposure, 0.0f));
         state.bindTexture(SPECULA_UNIT_POST_INPUT, source);
-        state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearClamp);
+        state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearMirror);
         state.bindImage(SPECULA_IMAGE_POST_OUTPUT, target, 0, gl::ImageAccess::WriteOnly);
         state.dispatchCompute(groups(target.width()), groups(target.height()));
         state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::Image);
@@ -153,7 +158,7 @@ void BloomPass::apply(gl::State& state, const gl::Texture& hdr, const BloomSetti
         // Level 1 now holds the sum of `levels` blurred copies of the frame.
         p.program.set(p.scale, frame ? std::max(settings.intensity, 0.0f) / float(levels) : 1.0f);
         state.bindTexture(SPECULA_UNIT_POST_INPUT, lower);
-        state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearClamp);
+        state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearMirror);
         state.bindImage(SPECULA_IMAGE_POST_OUTPUT, target, 0, gl::ImageAccess::ReadWrite);
         state.dispatchCompute(groups(target.width()), groups(target.height()));
         state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::Image | gl::Barrier::TextureUpdate |

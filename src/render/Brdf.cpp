@@ -45,9 +45,11 @@ dvec3 evaluate(const Surface& s, const dvec3& n, const dvec3& v, const dvec3& l)
     const double NoV = std::abs(glm::dot(n, v));
     const double NoH = std::clamp(glm::dot(n, h), 0.0, 1.0);
     const double VoH = std::clamp(glm::dot(v, h), 0.0, 1.0);
-    const dvec3 f0 = glm::mix(dvec3(0.04), s.baseColor, s.metallic);
+    const dvec3 f0 = glm::mix(dvec3(0.04 * s.specularFactor), s.baseColor, s.metallic);
+    const double f90 = s.specularFactor + (1.0 - s.specularFactor) * s.metallic;
     const dvec3 diffuseColor = s.baseColor * (1.0 - s.metallic);
-    const dvec3 F = F_Schlick(f0, VoH);
+    const double fc = std::pow(1.0 - VoH, 5.0);
+    const dvec3 F = f0 + (dvec3(f90) - f0) * fc;
     const double D = D_GGX(NoH, alpha);
     const double V = s.geometry == Geometry::SchlickGGX ? V_SchlickGGX(NoV, NoL, r) : V_SmithGGX(NoV, NoL, alpha);
     return (dvec3(1.0) - F) * diffuseColor / kPi + F * (D * V);

@@ -23,6 +23,7 @@ struct Surface {
     double metallic = 0.0;
     double perceptualRoughness = 0.5; ///< clamped to kMinPerceptualRoughness like the shader
     Geometry geometry = Geometry::SmithGGX;
+    double specularFactor = 1.0; ///< KHR_materials_specular (dielectric F0 and F90)
 };
 
 /// f(l, v) (1/sr) for unit n, v, l, not multiplied by NoL. Zero when NoL <= 0.

@@ -93,6 +93,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         gpu.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
         gpu.params = glm::vec4(m.metallicFactor, m.roughnessFactor, m.normalScale, m.occlusionStrength);
         gpu.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
+        gpu.specular = glm::vec4(m.specularColorFactor, m.specularFactor);
         for (int slot = 0; slot < 5; ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
 
         MaterialBinding binding;

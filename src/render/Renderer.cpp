@@ -425,12 +425,14 @@ gl::State& Renderer::state()
     return mImpl->state;
 }
 
-void Renderer::render(const View& view, const FrameSettings& settings)
+void Renderer::render(const View& view, const FrameSettings& requested)
 {
     Impl& r = *mImpl;
+    const FrameSettings settings = effectiveSettings(requested);
     const int samples = std::clamp(settings.msaa, 1, 16);
     r.ensureTargets(std::max(settings.width, 1), std::max(settings.height, 1), samples);
     r.stats = {};
+    r.timed.clear();
     r.state.resetCounters();
 
     auto& f = r.frame.data();
@@ -438,15 +440,28 @@ void Renderer::render(const View& view, const FrameSettings& settings)
     f.projection = view.projection;
     f.viewProjection = view.projection * view.view;
     f.cameraPosition = glm::vec4(view.position, 1.0f);
+    // 2^EV is compensation on top of the camera's exposure (docs/units.md); automatic
+    // exposure replaces the camera's on the GPU.
+    r.lastAutoExposure = settings.autoExposure.enabled;
+    r.lastDebugView = settings.debugView;
     r.lastExposureScale = std::exp2(settings.exposureEv);
+    if (settings.ev100 && !settings.autoExposure.enabled) r.lastExposureScale *= exposureFromEv100(*settings.ev100);
     f.exposure = glm::vec4(r.lastExposureScale, settings.reinhardWhite, 0.0f, 0.0f);
     f.ambient = glm::vec4(settings.ambient, 0.0f);
     f.options = glm::uvec4(tonemapId(settings.tonemap), uint32_t(r.lights.count()), 0u, 0u);
     r.frame.upload();
 
-    {
-        gl::DebugGroup group("forward");
-        if (r.timing) r.forwardTimer.begin();
+    if (settings.ssao.enabled) {
+        // Before the forward pass, which reads the occlusion for its ambient term.
+        if (!r.ssao) r.ssao = std::make_unique<SsaoPass>();
+        r.frame.bind(SPECULA_BINDING_FRAME);
+        r.pass("ssao prepass", [&] { r.ssao->drawDepthNormals(r.state, r.scene.get(), view, r.width, r.height); });
+        r.pass("ssao", [&] { r.ssao->computeOcclusion(r.state, view, settings.ssao); });
+        r.state.bindTexture(SPECULA_UNIT_SSAO, r.ssao->occlusion());
+        r.state.bindSampler(SPECULA_UNIT_SSAO, nullptr);
+    }
+
+    r.pass("forward", [&] {
         gl::Framebuffer& target = samples > 1 ? r.msaaFramebuffer : r.hdrFramebuffer;
         r.state.bindFramebuffer(&target);
         r.state.viewport(0, 0, r.width, r.height);
@@ -455,30 +470,73 @@ void Renderer::render(const View& view, const FrameSettings& settings)
         target.clearColor(0, settings.background.x, settings.background.y, settings.background.z, 1.0f);
         target.clearDepth(1.0f);
         r.drawScene(view, settings);
-        if (r.timing) r.forwardTimer.end();
-    }
+    });
     r.hdrResolved = samples == 1;
-    {
-        // With MSAA the tone mapper resolves as it reads (one pass instead of a blit and a
-        // pass); the resolved HDR image is made only when someone asks (readRadiance).
-        gl::DebugGroup group(samples > 1 ? "resolve+tonemap" : "tonemap");
-        if (r.timing) r.tonemapTimer.begin();
-        r.state.bindFramebuffer(&r.ldrFramebuffer);
+
+    // Passes on the HDR frame need it resolved. Without them the tone mapper resolves as it
+    // reads (one pass instead of a blit and a pass), and the resolved HDR image is made only
+    // when someone asks (readRadiance): with every post pass off the frame costs what it did.
+    const bool hdrPasses = settings.bloom.enabled || settings.autoExposure.enabled;
+    if (hdrPasses && !r.hdrResolved) {
+        r.pass("resolve", [&] { r.msaaFramebuffer.blitColorTo(r.hdrFramebuffer, r.width, r.height); });
+        r.hdrResolved = true;
+    }
+    if (settings.bloom.enabled) {
+        if (!r.bloom) r.bloom = std::make_unique<BloomPass>();
+        r.pass("bloom", [&] {
+            r.bloom->apply(r.state, r.hdrColor, settings.bloom, r.lastExposureScale, settings.debugView == DebugView::Bloom);
+        });
+    }
+    if (settings.autoExposure.enabled) {
+        if (!r.autoExposure) r.autoExposure = std::make_unique<ExposurePass>();
+        r.pass("exposure", [&] { r.autoExposure->apply(r.state, r.hdrColor, settings.autoExposure); });
+    }
+
+    if (settings.fxaa.enabled && (r.fxaaInput.width() != r.width || r.fxaaInput.height() != r.height || !r.fxaaInput)) {
+        r.state.reset(); // names of the deleted target may be reused
+        gl::TextureDesc desc;
+        desc.width = r.width;
+        desc.height = r.height;
+        desc.format = gl::Format::SRGB8_ALPHA8;
+        desc.label = "fxaa input";
+        r.fxaaInput = gl::Texture(desc);
+        r.fxaaFramebuffer = gl::Framebuffer("fxaa input");
+        r.fxaaFramebuffer.attachColor(0, r.fxaaInput).check();
+    }
+    const bool fused = !r.hdrResolved;
+    r.pass(fused ? "resolve+tonemap" : "tonemap", [&] {
+        r.state.bindFramebuffer(settings.fxaa.enabled ? &r.fxaaFramebuffer : &r.ldrFramebuffer);
         r.state.viewport(0, 0, r.width, r.height);
         r.state.apply({.noDepthTest = true, .noDepthWrite = true, .framebufferSrgb = true});
-        r.state.useProgram(r.tonemap(samples));
+        r.state.useProgram(r.tonemap(fused ? samples : 1, settings.autoExposure.enabled));
         r.frame.bind(SPECULA_BINDING_FRAME);
-        r.state.bindTexture(SPECULA_UNIT_POST_INPUT, samples > 1 ? r.msaaColor : r.hdrColor);
+        if (settings.autoExposure.enabled) r.autoExposure->bind();
+        r.state.bindTexture(SPECULA_UNIT_POST_INPUT, fused ? r.msaaColor : r.hdrColor);
         r.state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
         r.state.bindVertexArray(r.emptyVertexArray);
         r.state.drawTriangles(3, false);
-        if (r.timing) r.tonemapTimer.end();
+    });
+    if (settings.fxaa.enabled) {
+        if (!r.fxaa) r.fxaa = std::make_unique<FxaaPass>();
+        r.pass("fxaa", [&] { r.fxaa->apply(r.state, r.fxaaInput, r.ldrFramebuffer); });
+    }
+    if (settings.debugView == DebugView::Ssao) {
+        r.pass("debug view", [&] {
+            if (!r.debugProgram)
+                r.debugProgram = gl::Program({.vertex = "post/fullscreen.vert", .fragment = "post/debug.frag", .label = "debug view"});
+            r.state.bindFramebuffer(&r.ldrFramebuffer);
+            r.state.viewport(0, 0, r.width, r.height);
+            // No sRGB encoding: the byte is the occlusion × 255.
+            r.state.apply({.noDepthTest = true, .noDepthWrite = true});
+            r.state.useProgram(r.debugProgram);
+            r.state.bindTexture(SPECULA_UNIT_POST_INPUT, r.ssao->occlusion());
+            r.state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
+            r.state.bindVertexArray(r.emptyVertexArray);
+            r.state.drawTriangles(3, false);
+        });
     }
     r.stats.drawCalls = r.state.drawCalls();
-    if (r.timing) {
-        r.stats.passes.push_back({"forward", r.forwardTimer.elapsedMs()});
-        r.stats.passes.push_back({samples > 1 ? "resolve+tonemap" : "tonemap", r.tonemapTimer.elapsedMs()});
-    }
+    for (const auto& [name, timer] : r.timed) r.stats.passes.push_back({name, timer->elapsedMs()});
 }
 
 ImageRGBA8 Renderer::readImage() const
@@ -496,24 +554,44 @@ ImageRGBA8 Renderer::readImage() const
     return image;
 }
 
+float Renderer::exposureScale() const
+{
+    const Impl& r = *mImpl;
+    if (r.lastAutoExposure && r.autoExposure) return r.lastExposureScale * r.autoExposure->read().exposure;
+    return r.lastExposureScale;
+}
+
 ImageFloat Renderer::readRadiance() const
 {
     Impl& r = *mImpl;
+    ImageFloat image;
+    image.width = r.width;
+    image.height = r.height;
+    const size_t row = size_t(r.width) * 4;
+    image.pixels.resize(row * size_t(r.height));
+    if (r.lastDebugView == DebugView::Ssao && r.ssao) {
+        const std::vector<float> ao = r.ssao->occlusion().readFloat(0, 1);
+        for (int y = 0; y < r.height; ++y) {
+            for (int x = 0; x < r.width; ++x) {
+                const float value = ao[size_t(r.height - 1 - y) * size_t(r.width) + size_t(x)];
+                float* pixel = &image.pixels[size_t(y) * row + size_t(x) * 4];
+                pixel[0] = pixel[1] = pixel[2] = value;
+                pixel[3] = 1.0f;
+            }
+        }
+        return image;
+    }
     if (!r.hdrResolved) {
         r.msaaFramebuffer.blitColorTo(r.hdrFramebuffer, r.width, r.height);
         r.hdrResolved = true;
     }
-    ImageFloat image;
-    image.width = r.width;
-    image.height = r.height;
+    const float scale = exposureScale();
     const std::vector<float> pixels = r.hdrColor.readFloat(0, 4);
-    image.pixels.resize(pixels.size());
-    const size_t row = size_t(r.width) * 4;
     for (int y = 0; y < r.height; ++y) {
         for (size_t x = 0; x < row; ++x) {
             const float value = pixels[size_t(r.height - 1 - y) * row + x];
             // Alpha stays coverage; colour channels carry the exposure like the PNG does.
-            image.pixels[size_t(y) * row + x] = (x % 4 == 3) ? value : value * r.lastExposureScale;
+            image.pixels[size_t(y) * row + x] = (x % 4 == 3) ? value : value * scale;
         }
     }
     return image;

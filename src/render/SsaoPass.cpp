@@ -170,7 +170,7 @@ void SsaoPass::prepare(const GpuScene* scene)
     mImpl->ensureComputePrograms();
 }
 
-void SsaoPass::drawDepthNormals(gl::State& state, const GpuScene& scene, const View& view, int width, int height)
+void SsaoPass::drawDepthNormals(gl::State& state, const GpuScene* gpuScene, const View& view, int width, int height)
 {
     Impl& r = *mImpl;
     r.ensureTargets(state, width, height);
@@ -180,6 +180,8 @@ void SsaoPass::drawDepthNormals(gl::State& state, const GpuScene& scene, const V
     // The normal of "nothing" faces the camera; the depth 1 is what the SSAO passes test.
     r.framebuffer.clearColor(0, 0.0f, 0.0f, 1.0f, 0.0f);
     r.framebuffer.clearDepth(1.0f);
+    if (!gpuScene) return;
+    const GpuScene& scene = *gpuScene;
 
     const Frustum frustum(view.projection * view.view);
     int boundMaterial = -1;

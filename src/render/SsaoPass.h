@@ -29,8 +29,9 @@ public:
 
     /// Draws depth and view-space face normals of `scene`'s opaque and alpha-masked surfaces in
     /// `view` (frustum-culled) at width × height, one sample per pixel. Expects the frame
-    /// uniform block (view, viewProjection) bound. Blended surfaces do not occlude.
-    void drawDepthNormals(gl::State& state, const GpuScene& scene, const View& view, int width, int height);
+    /// uniform block (view, viewProjection) bound. Blended surfaces do not occlude; no scene
+    /// leaves nothing to occlude.
+    void drawDepthNormals(gl::State& state, const GpuScene* scene, const View& view, int width, int height);
     /// Occlusion of the last pre-pass and its blur; then occlusion() holds the result.
     void computeOcclusion(gl::State& state, const View& view, const SsaoSettings& settings);
     /// R16F, width × height: 1 = unoccluded. Valid after computeOcclusion().

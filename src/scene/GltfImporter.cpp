@@ -31,6 +31,7 @@ namespace fs = std::filesystem;
 constexpr std::string_view kSupportedRequiredExtensions[] = {
     "KHR_lights_punctual",
     "KHR_materials_emissive_strength",
+    "KHR_materials_specular", // factors; its textures are ignored
     "KHR_mesh_quantization", // integer attributes: the accessor reader handles every component type
     "KHR_texture_transform",
     // Textures carry a DDS source in the extension; we use their plain `source` when there is
@@ -589,6 +590,13 @@ private:
             material.emissiveFactor = factor<3>(source.emissiveFactor, glm::vec3(0.0f), where, "emissiveFactor");
             if (const tinygltf::Value* strength = extension(source.extensions, "KHR_materials_emissive_strength"))
                 material.emissiveStrength = float(number(*strength, "emissiveStrength").value_or(1.0));
+            if (const tinygltf::Value* specular = extension(source.extensions, "KHR_materials_specular")) {
+                material.specularFactor = float(std::clamp(number(*specular, "specularFactor").value_or(1.0), 0.0, 1.0));
+                if (const tinygltf::Value* color = member(*specular, "specularColorFactor");
+                    color && color->IsArray() && color->ArrayLen() == 3)
+                    for (int c = 0; c < 3; ++c)
+                        if (color->Get(c).IsNumber()) material.specularColorFactor[c] = float(std::max(color->Get(c).GetNumberAsDouble(), 0.0));
+            }
             material.normalScale = float(source.normalTexture.scale);
             material.occlusionStrength = float(source.occlusionTexture.strength);
             if (source.alphaMode == "MASK") {

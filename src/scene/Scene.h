@@ -60,6 +60,10 @@ struct Material {
     float roughnessFactor = 1.0f; ///< perceptual roughness; α = roughness²
     glm::vec3 emissiveFactor{0.0f};
     float emissiveStrength = 1.0f; ///< KHR_materials_emissive_strength
+    /// KHR_materials_specular (factors only): scales the dielectric F0 and F90; 0 leaves a
+    /// pure Lambertian dielectric.
+    float specularFactor = 1.0f;
+    glm::vec3 specularColorFactor{1.0f};
     float normalScale = 1.0f;
     float occlusionStrength = 1.0f;
     AlphaMode alphaMode = AlphaMode::Opaque;

@@ -27,10 +27,11 @@ constexpr int kSize = 64;
 
 // A unit sphere seen by an orthographic camera from +Z (so v = +Z at every pixel), no lights.
 SphereRender renderSphere(render::Renderer& renderer, float metallic, float roughness, glm::vec3 baseColor,
-                          const render::FrameSettings& base = {})
+                          const render::FrameSettings& base = {}, float specularFactor = 1.0f)
 {
     scene::Scene s;
     scene::Material m;
+    m.specularFactor = specularFactor;
     m.baseColorFactor = glm::vec4(baseColor, 1.0f);
     m.metallicFactor = metallic;
     m.roughnessFactor = roughness;
@@ -77,6 +78,7 @@ TEST_F(GlTest, WhiteFurnace)
     const glm::vec3 L(0.6f, 0.6f, 0.6f);
     render::Renderer renderer;
     renderer.setEnvironment(render::constantEnvironment(L));
+    double worst = 0.0;
     for (float roughness : {0.0f, 0.25f, 0.5f, 0.75f, 1.0f}) {
         for (float metallic : {1.0f, 0.0f}) {
             const SphereRender r = renderSphere(renderer, metallic, roughness, glm::vec3(1.0f));
@@ -87,12 +89,14 @@ TEST_F(GlTest, WhiteFurnace)
                     if (!sphereNormal(x, y, n) || n.z < 0.1f) continue;
                     ++tested;
                     const glm::vec3 c = pixel(r.image, x, y);
+                    worst = std::max(worst, double(std::abs(c.x - L.x) / L.x));
                     for (int ch = 0; ch < 3; ++ch)
                         ASSERT_NEAR(c[ch], L[ch], 0.02f * L[ch]) << "metallic " << metallic << " roughness " << roughness
                                                                   << " pixel " << x << "," << y;
                 }
             EXPECT_GT(tested, 2000);
         }
+        std::printf("white furnace up to roughness %.2f: worst deviation %.2f%%\n", roughness, 100.0 * worst);
         const SphereRender coloured = renderSphere(renderer, 0.0f, roughness, {0.9f, 0.5f, 0.1f});
         for (size_t i = 0; i < coloured.image.pixels.size(); i += 4)
             for (int ch = 0; ch < 3; ++ch) EXPECT_LE(coloured.image.pixels[i + size_t(ch)], L[ch] * 1.005f);
@@ -101,20 +105,24 @@ TEST_F(GlTest, WhiteFurnace)
 
 TEST_F(GlTest, UniformEnvironmentLightsLambertAtAlbedo)
 {
-    // Irradiance from a uniform L is pi L, so a Lambertian albedo a reflects a L. glTF has no
-    // pure Lambert material; a dielectric's diffuse lobe gets (1 - E_spec) of it. With
-    // metallic 0 the pixel is a L (1 - E) + L E: at normal incidence E = 0.04 + small, so the
-    // pixel lies between a L and L, closer to a L the darker the base colour... checked as a
-    // bracket plus the exact white case in WhiteFurnace.
-    const glm::vec3 L(1.0f);
+    // Irradiance from a uniform L is pi L, so a Lambertian surface of albedo a reflects a L at
+    // every pixel. A pure Lambertian dielectric is KHR_materials_specular's specularFactor 0.
+    // Bound 2%; measured within 0.3%.
+    const glm::vec3 L(0.8f, 0.5f, 0.25f);
     render::Renderer renderer;
     renderer.setEnvironment(render::constantEnvironment(L));
-    for (float albedo : {0.2f, 0.5f, 0.8f}) {
-        const SphereRender r = renderSphere(renderer, 0.0f, 1.0f, glm::vec3(albedo));
-        const glm::vec3 centre = pixel(r.image, kSize / 2, kSize / 2);
-        EXPECT_GE(centre.x, albedo * 0.99f);
-        // Rough dielectric at normal incidence: single-scattering specular albedo ~0.04.
-        EXPECT_LE(centre.x, albedo + (1.0f - albedo) * 0.06f);
+    for (float albedo : {0.2f, 0.5f, 1.0f}) {
+        const SphereRender r = renderSphere(renderer, 0.0f, 0.5f, glm::vec3(albedo), {}, 0.0f);
+        int tested = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                glm::vec3 n;
+                if (!sphereNormal(x, y, n) || n.z < 0.1f) continue;
+                ++tested;
+                const glm::vec3 c = pixel(r.image, x, y);
+                for (int ch = 0; ch < 3; ++ch) ASSERT_NEAR(c[ch], albedo * L[ch], 0.02f * albedo * L[ch]) << "albedo " << albedo;
+            }
+        EXPECT_GT(tested, 2000);
     }
 }
 
@@ -169,7 +177,10 @@ TEST_F(GlTest, SplitSumMatchesMonteCarloUnderARealHdr)
     ASSERT_TRUE(std::filesystem::exists(file)) << "shared assets missing";
     const render::EnvironmentMap map = render::loadEnvironmentMap(file);
     render::Renderer renderer;
-    renderer.setEnvironment(map);
+    // Both bake presets are measured (printed); the bounds apply to the default one.
+  for (const char* presetName : {"reference", "default"}) {
+    renderer.setEnvironment(map, *render::bakePreset(presetName));
+    const bool checked = std::string(presetName) == "default";
     for (float roughness : {0.3f, 0.6f, 1.0f}) {
         const glm::vec3 f0(0.95f, 0.64f, 0.54f);
         const SphereRender r = renderSphere(renderer, 1.0f, roughness, f0);
@@ -229,14 +240,17 @@ TEST_F(GlTest, SplitSumMatchesMonteCarloUnderARealHdr)
                 worst = std::max(worst, error);
                 total += error;
                 ++count;
- if (NoV >= 0.8) {
+ if (checked && NoV >= 0.8) {
                     EXPECT_LT(error, 0.25) << "roughness " << roughness << " n " << n.x << "," << n.y << "," << n.z << " GPU " << got.x
                                            << " CPU " << expected.x;
                 }
             }
         }
-        std::printf("split sum vs Monte Carlo, venice, roughness %.1f: mean error %.1f%%, worst %.1f%% (%d pixels)\n",
-                    roughness, 100.0 * total / count, 100.0 * worst, count);
-        EXPECT_LT(total / count, 0.12) << "roughness " << roughness;
+        std::printf("split sum vs Monte Carlo, venice, preset %s, roughness %.1f: mean error %.1f%%, worst %.1f%% (%d pixels)\n",
+                    presetName, roughness, 100.0 * total / count, 100.0 * worst, count);
+        if (checked) {
+            EXPECT_LT(total / count, 0.12) << "roughness " << roughness;
+        }
     }
+  }
 }

@@ -142,3 +142,15 @@ TEST(Brdf, PunctualFalloff)
     EXPECT_GT(mid, 0.0);
     EXPECT_LT(mid, 1.0);
 }
+
+TEST(Brdf, SpecularFactorZeroIsLambert)
+{
+    // KHR_materials_specular with specularFactor 0: no specular lobe, f = albedo / pi.
+    Surface s{dvec3(0.7, 0.5, 0.2), 0.0, 0.4, Geometry::SmithGGX, 0.0};
+    const dvec3 n(0, 0, 1);
+    for (int i = 0; i < 20; ++i) {
+        const dvec3 v = sphericalDirection(0.07 * i, 0.3 * i), l = sphericalDirection(1.4 - 0.07 * i, 2.0 + 0.5 * i);
+        const dvec3 f = evaluate(s, n, v, l);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[c], s.baseColor[c] / kPi, 1e-12);
+    }
+}

@@ -1,0 +1,81 @@
+// Environments on the command line: the bake cache, `specula bake`, and bad environment files.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "CliRunner.h"
+
+namespace fs = std::filesystem;
+using specula::test::runCli;
+using specula::test::tempDir;
+
+namespace {
+const std::string kEnv = std::string(SPECULA_ASSETS_DIR) + "/env/";
+}
+
+TEST(CliEnvironment, SecondRunReadsTheBakeCache)
+{
+    const std::string dir = tempDir("bakecache");
+    const std::string env = "SPECULA_CACHE_DIR=" + dir + "/cache ";
+    const std::string command = "render learnopengl-ibl --env " + kEnv + "city_1k.hdr --width 64 --height 48 -o " + dir + "/out.png";
+    // runCli prefixes the binary; set the variable through env(1).
+    const auto first = runCli("--help >/dev/null; " + env + std::string(SPECULA_CLI_PATH) + " " + command);
+    ASSERT_EQ(first.exitCode, 0) << first.err;
+    EXPECT_NE(first.err.find("baking environment"), std::string::npos) << first.err;
+    const auto second = runCli("--help >/dev/null; " + env + std::string(SPECULA_CLI_PATH) + " " + command);
+    ASSERT_EQ(second.exitCode, 0) << second.err;
+    EXPECT_EQ(second.err.find("baking environment"), std::string::npos) << "baked again:\n" << second.err;
+    EXPECT_NE(second.err.find("from the bake cache"), std::string::npos) << second.err;
+    // A different bake preset is a different cache entry.
+    const auto third = runCli("--help >/dev/null; " + env + std::string(SPECULA_CLI_PATH) + " " + command + " --bake-preset reference");
+    ASSERT_EQ(third.exitCode, 0) << third.err;
+    EXPECT_NE(third.err.find("baking environment"), std::string::npos) << third.err;
+}
+
+TEST(CliEnvironment, BakeCommandPrintsWhatItWrote)
+{
+    const std::string dir = tempDir("bakecmd");
+    const auto r = runCli("bake " + kEnv + "venice_1k.hdr --cache-dir " + dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("wrote " + dir), std::string::npos) << r.out;
+    size_t files = 0;
+    for (const auto& entry : fs::directory_iterator(dir)) files += entry.path().extension() == ".bin";
+    EXPECT_GE(files, 3u); // the environment and two DFG tables
+    const auto again = runCli("bake " + kEnv + "venice_1k.hdr --cache-dir " + dir);
+    EXPECT_NE(again.out.find("already cached"), std::string::npos) << again.out;
+}
+
+TEST(CliEnvironment, BadEnvironmentFiles)
+{
+    const std::string dir = tempDir("badenv");
+    std::ifstream in(kEnv + "city_1k.hdr", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(dir + "/cut.hdr", std::ios::binary).write(bytes.data(), std::streamsize(bytes.size() / 3));
+    std::ifstream inExr(kEnv + "city.exr", std::ios::binary);
+    std::string exr((std::istreambuf_iterator<char>(inExr)), std::istreambuf_iterator<char>());
+    std::ofstream(dir + "/cut.exr", std::ios::binary).write(exr.data(), std::streamsize(exr.size() / 2));
+    for (const std::string file : {"cut.hdr", "cut.exr", "missing.hdr"}) {
+        const auto r = runCli("render --env " + dir + "/" + file + " --no-cache -o " + dir + "/out.png");
+        EXPECT_NE(r.exitCode, 0) << file;
+        EXPECT_LT(r.exitCode, 128) << file << " crashed";
+        EXPECT_EQ(r.errorLines(), 1) << r.err;
+        EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(dir + "/out.png"));
+    }
+    const auto color = runCli("render --env-color 1,x,2 -o " + dir + "/out.png");
+    EXPECT_NE(color.exitCode, 0);
+    EXPECT_EQ(color.errorLines(), 1) << color.err;
+    const auto sky = runCli("render --skybox blur=3 -o " + dir + "/out.png");
+    EXPECT_NE(sky.exitCode, 0);
+    EXPECT_EQ(sky.errorLines(), 1) << sky.err;
+}
+
+TEST(CliEnvironment, ExrEnvironmentRenders)
+{
+    const std::string dir = tempDir("exrenv");
+    const auto r = runCli("render --env " + kEnv + "studio.exr --env-rotation 45 --env-intensity 0.5 --skybox blur=0.3 --no-cache "
+                          "--width 64 --height 48 -o " + dir + "/out.png");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir + "/out.png"));
+}
