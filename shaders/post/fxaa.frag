@@ -36,10 +36,9 @@ float lumaAt(vec2 uv)
     return luma(textureLod(uInput, uv, 0.0).rgb);
 }
 
-float lumaOffset(vec2 uv, ivec2 offset)
-{
-    return luma(textureLodOffset(uInput, uv, 0.0, offset).rgb);
-}
+// A macro, not a function: textureLodOffset's offset must be a constant expression, which a
+// function parameter is not (Mesa inlines and accepts it; glslang and the spec do not).
+#define lumaOffset(uv, offset) luma(textureLodOffset(uInput, uv, 0.0, offset).rgb)
 
 void main()
 {

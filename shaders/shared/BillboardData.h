@@ -1,5 +1,8 @@
 // Billboard instances (storage buffer, std430): one record per billboard. What a group shares
 // (kind, size, anchor, sprite, alpha mode) is set per draw by BillboardPass.
+#ifdef __cplusplus
+#pragma once
+#endif
 #include "Prelude.h"
 
 SPECULA_SHARED_BEGIN

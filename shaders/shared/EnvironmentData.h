@@ -1,4 +1,7 @@
 // Image-based lighting constants (uniform buffer, std140).
+#ifdef __cplusplus
+#pragma once
+#endif
 #include "Prelude.h"
 
 SPECULA_SHARED_BEGIN

@@ -1,5 +1,8 @@
 // Punctual lights (uniform buffer, std140). Units as in KHR_lights_punctual: point and spot
 // intensity in candela, directional in lux; colour is a linear RGB tint.
+#ifdef __cplusplus
+#pragma once
+#endif
 #include "Prelude.h"
 
 SPECULA_SHARED_BEGIN

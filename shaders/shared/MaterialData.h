@@ -2,6 +2,9 @@
 // range for its draws. (A storage buffer indexed per draw would be simpler, but llvmpipe
 // returns zeros for storage-buffer loads in helper invocations, which breaks the texture
 // derivatives of KHR_texture_transform'd uvs along triangle edges.)
+#ifdef __cplusplus
+#pragma once
+#endif
 #include "Prelude.h"
 
 SPECULA_SHARED_BEGIN
@@ -24,11 +27,14 @@ struct GpuMaterial {
     uvec4 flags;          // x SPECULA_MATERIAL_* bits; y texCoord sets, 2 bits per texture
                           // (base colour, metallic-roughness, normal, occlusion, emissive)
     vec4 uvTransform[10]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
-    vec4 specular;        // KHR_materials_specular: rgb specularColorFactor, a specularFactor
+    vec4 specular;        // KHR_materials_specular: rgb specularColorFactor, a specularFactor; rgb also
+                          // carries KHR_materials_ior: x (F0(ior) / 0.04), so 0.04 x rgb is the dielectric F0
+    vec4 phong;           // Phong, Blinn-Phong, Gouraud, flat: rgb dielectric specular colour ks,
+                          // a shininess (0 = from roughness)
 };
 
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::GpuMaterial) == 16 * 16);
+static_assert(sizeof(specula::shared::GpuMaterial) == 17 * 16);
 #endif

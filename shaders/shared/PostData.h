@@ -1,5 +1,8 @@
 // Post-processing constants: SSAO and auto-exposure parameters (uniform buffers, std140) and
 // the exposure state the auto-exposure pass leaves for the tone mapper (storage buffer).
+#ifdef __cplusplus
+#pragma once
+#endif
 #include "Prelude.h"
 
 SPECULA_SHARED_BEGIN

@@ -123,13 +123,16 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
     // Mesa: "0:12(5): error: ..."   NVIDIA: "0(12) : error C0000: ..."
     static const std::regex mesaRe(R"(^(\d+):(\d+)\((\d+)\):\s*(.*)$)");
     static const std::regex nvidiaRe(R"(^(\d+)\((\d+)\)\s*:\s*(.*)$)");
+    // glslangValidator: "ERROR: 0:12: ..."
+    static const std::regex glslangRe(R"(^(?:ERROR|WARNING): (\d+):(\d+): (.*)$)");
     std::istringstream lines(log);
     std::string line;
     std::string out;
     while (std::getline(lines, line)) {
         std::smatch match;
         std::string mapped = line;
-        if (std::regex_match(line, match, mesaRe) || std::regex_match(line, match, nvidiaRe)) {
+        if (std::regex_match(line, match, mesaRe) || std::regex_match(line, match, nvidiaRe) ||
+            std::regex_match(line, match, glslangRe)) {
             size_t index = std::stoul(match[1].str());
             long lineNumber = std::stol(match[2].str());
             if (lineNumber >= kLineStride) {
