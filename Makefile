@@ -27,7 +27,9 @@ test: build
 	@bash scripts/test.sh $(BUILD)
 
 bench: build
+	@mkdir -p out
 	$(BUILD)/specula bench -o out/bench.json
+	$(BUILD)/specula_microbench
 
 clean:
 	rm -rf $(BUILD)

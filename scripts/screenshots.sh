@@ -19,3 +19,10 @@ done
 $S "$SHARED/models/DamagedHelmet/DamagedHelmet.glb" --env "$SHARED/env/venice_1k.hdr" --width 480 --height 360 -o "$OUT/DamagedHelmet-venice.png"
 $S "$SHARED/models/WaterBottle/WaterBottle.gltf" --env "$SHARED/env/studio_1k.hdr" --width 480 --height 360 -o "$OUT/WaterBottle-studio.png"
 $S --env "$SHARED/env/sunset_1k.hdr" --width 480 --height 360 -o "$OUT/demo-sunset.png"
+# Post-processing (docs/post-processing.md): bloom and SSAO, and the buffers alone.
+$S --bloom on --ssao on --width 960 --height 540 -o "$OUT/demo-post.png"
+$S --env none --bloom on --width 480 --height 270 -o "$OUT/demo-night-bloom.png"
+$S --debug-view ssao --width 480 --height 270 -o "$OUT/demo-ssao.png"
+$S --env none --debug-view bloom --width 480 --height 270 -o "$OUT/demo-bloom.png"
+$S "$SHARED/models/DamagedHelmet/DamagedHelmet.glb" --env "$SHARED/env/venice_1k.hdr" --bloom on --ssao on --width 480 --height 360 -o "$OUT/DamagedHelmet-post.png"
+$S "$SHARED/models/DamagedHelmet/DamagedHelmet.glb" --debug-view ssao --width 480 --height 360 -o "$OUT/DamagedHelmet-ssao.png"

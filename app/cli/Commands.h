@@ -9,7 +9,10 @@ struct RenderArgs {
     std::string scene;
     std::string output = "out.png";
     FrameOptions frame;
+    bool stats = false; ///< print the GPU time of each pass (median of kStatsFrames more frames)
 };
+
+constexpr int kStatsFrames = 9;
 
 struct BenchArgs {
     std::vector<std::string> scenes{"demo", "learnopengl", "learnopengl-ibl"};
@@ -25,7 +28,17 @@ struct BakeArgs {
     std::string cacheDirectory;
 };
 
+/// specula gallery: one tile per shading model (and BRDF term with `variants`), labelled.
+struct GalleryArgs {
+    std::string scene;
+    std::string output = "gallery.png";
+    bool variants = false;
+    int columns = 3;
+    FrameOptions frame;
+};
+
 int runRender(const RenderArgs& args);
+int runGallery(const GalleryArgs& args);
 int runBake(const BakeArgs& args);
 int runInfo();
 int runBench(const BenchArgs& args);

@@ -2,6 +2,7 @@
 #include <filesystem>
 
 #include "Commands.h"
+#include "PassTable.h"
 #include "core/Error.h"
 #include "core/ImageIO.h"
 #include "core/Log.h"
@@ -49,6 +50,21 @@ int runRender(const RenderArgs& args)
     log::info("first frame {:.0f} ms after start; wrote {} ({}x{}, {} sample{}, {} tone mapping)", firstFrameMs,
               output.string(), settings.width, settings.height, settings.msaa, settings.msaa == 1 ? "" : "s",
               render::tonemapName(settings.tonemap));
+    if (args.stats) {
+        // After the written frame, so its start-up figure is unchanged; the first timed frame
+        // would include shader compilation, so one untimed frame goes first.
+        renderer.render(view, settings);
+        renderer.setGpuTiming(true);
+        renderer.setPassWallClock(true);
+        PassTimes times;
+        for (int frame = 0; frame < kStatsFrames; ++frame) {
+            renderer.render(view, settings);
+            times.add(renderer.stats());
+        }
+        printPassTable(fmt::format("Time per pass, median of {} frames ({}x{}, {} sample{}):", kStatsFrames, settings.width,
+                                   settings.height, settings.msaa, settings.msaa == 1 ? "" : "s"),
+                       times.medians());
+    }
     if (debug.errorCount() > 0) {
         // GL errors are bugs: never pass one off as a good image.
         std::filesystem::remove(output);

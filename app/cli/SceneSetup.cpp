@@ -4,6 +4,7 @@
 
 #include "core/Error.h"
 #include "scene/DemoScenes.h"
+#include "scene/DoomLighting.h"
 
 namespace specula::cli {
 
@@ -33,8 +34,48 @@ scene::SceneDocument loadSceneOrBuiltin(const std::string& name)
         document.render.defaultLights = false;
         return document;
     }
+    if (name == "doom") {
+        // The Doom-era demo level (scene/DoomLighting.h): its materials use the Doom model,
+        // which needs no lights and no environment.
+        scene::SceneDocument document;
+        document.scene = scene::doom::makeDemoLevel();
+        document.render.defaultLights = false;
+        return document;
+    }
     return scene::loadScene(name);
 }
+
+namespace {
+
+template <typename T, typename Parse>
+std::optional<T> parseOption(const std::optional<std::string>& value, const char* flag, Parse parse, const char* names)
+{
+    if (!value) return std::nullopt;
+    const std::optional<T> parsed = parse(*value);
+    if (!parsed) throw Error("unknown {} '{}' ({})", flag, *value, names);
+    return parsed;
+}
+
+/// --shading and --brdf-*: every material's choice for this frame; --debug-view.
+void applyMaterialOverrides(const FrameOptions& options, render::FrameSettings& s)
+{
+    scene::MaterialShading& o = s.materialOverride;
+    o.model = parseOption<scene::ShadingModel>(options.shading, "--shading", scene::parseShadingModel, scene::shadingModelNames());
+    o.distribution = parseOption<scene::BrdfDistribution>(options.brdfD, "--brdf-d", scene::parseBrdfDistribution,
+                                                          scene::brdfDistributionNames());
+    o.geometry = parseOption<scene::BrdfGeometry>(options.brdfG, "--brdf-g", scene::parseBrdfGeometryName, scene::brdfGeometryNames());
+    o.fresnel = parseOption<scene::BrdfFresnel>(options.brdfF, "--brdf-f", scene::parseBrdfFresnel, scene::brdfFresnelNames());
+    o.diffuse = parseOption<scene::BrdfDiffuse>(options.brdfDiffuse, "--brdf-diffuse", scene::parseBrdfDiffuse, scene::brdfDiffuseNames());
+    if (options.debugView) {
+        const auto view = render::parseDebugView(*options.debugView);
+        if (!view)
+            throw Error("unknown --debug-view '{}' (base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, "
+                        "brdf-f, ssao, bloom)", *options.debugView);
+        s.debugView = *view;
+    }
+}
+
+} // namespace
 
 render::FrameSettings resolveSettings(const scene::SceneDocument& document, const FrameOptions& options)
 {
@@ -50,13 +91,19 @@ render::FrameSettings resolveSettings(const scene::SceneDocument& document, cons
         throw Error("--msaa must be 1, 2, 4 or 8 (got {})", s.msaa);
     const std::string tonemap = options.tonemap.value_or(file.tonemap.value_or("neutral"));
     const auto parsedTonemap = render::parseTonemap(tonemap);
-    if (!parsedTonemap) throw Error("unknown tone mapper '{}' (none, reinhard, reinhard-ext, aces, neutral)", tonemap);
+    if (!parsedTonemap) throw Error("unknown tone mapper '{}' (none, reinhard, reinhard-ext, aces, neutral, agx)", tonemap);
     s.tonemap = *parsedTonemap;
     const std::string g = options.brdfG.value_or(file.brdfG.value_or("smith-ggx"));
     const auto geometry = render::parseBrdfGeometry(g);
-    if (!geometry) throw Error("unknown --brdf-g '{}' (smith-ggx, schlick-ggx)", g);
+    if (!geometry) throw Error("unknown --brdf-g '{}' ({})", g, scene::brdfGeometryNames());
     s.brdfGeometry = *geometry;
+    applyMaterialOverrides(options, s);
     s.gizmos = options.gizmos;
+    if (options.energyCompensation) {
+        if (*options.energyCompensation != "on" && *options.energyCompensation != "off")
+            throw Error("--energy-compensation wants on or off (got '{}')", *options.energyCompensation);
+        s.energyCompensation = *options.energyCompensation == "on";
+    }
     s.environment.intensity = options.envIntensity.value_or(document.environment.intensity);
     s.environment.rotationDegrees = options.envRotation.value_or(document.environment.rotationDegrees);
     if (s.environment.intensity < 0.0f) throw Error("--env-intensity must not be negative");
@@ -75,6 +122,7 @@ render::FrameSettings resolveSettings(const scene::SceneDocument& document, cons
         }
     }
     if (document.scene.name == "learnopengl") s.ambient = glm::vec3(0.03f);
+    resolvePostSettings(document, options.post, s);
     return s;
 }
 

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "PostOptions.h"
 #include "render/Renderer.h"
 #include "scene/SceneFile.h"
 
@@ -14,6 +15,9 @@ struct FrameOptions {
     std::optional<float> exposure;
     std::optional<std::string> tonemap;
     std::optional<std::string> brdfG;
+    // Material system: --brdf-d, --brdf-f, --brdf-diffuse, --shading override every material;
+    // --debug-view shows one buffer instead of the frame.
+    std::optional<std::string> brdfD, brdfF, brdfDiffuse, shading, debugView;
     int camera = -1;
     bool noDefaultLights = false;
     // Environment: --env FILE|sky|none, --env-color R,G,B, --env-intensity, --env-rotation,
@@ -25,7 +29,9 @@ struct FrameOptions {
     std::optional<std::string> skybox;
     std::string bakePreset = "default";
     bool noCache = false;
+    std::optional<std::string> energyCompensation; ///< on (default) | off
     bool gizmos = false;
+    PostOptions post; ///< bloom, SSAO, FXAA, exposure, debug views
 };
 
 /// `name` is a .gltf/.glb/.json path, or a built-in scene ("demo", "learnopengl"); empty = demo.

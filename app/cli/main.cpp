@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "Commands.h"
+#include "app/viewer/ViewCommand.h"
 #include "core/Error.h"
 #include "core/Log.h"
 
@@ -18,8 +19,14 @@ void addFrameOptions(CLI::App* command, cli::FrameOptions& frame)
     command->add_option("--height", frame.height, "image height in pixels (default 720)");
     command->add_option("--msaa", frame.msaa, "samples per pixel: 1 (pixel centre, no anti-aliasing), 2, 4 (default), 8");
     command->add_option("--exposure", frame.exposure, "exposure in EV: the image is multiplied by 2^EV (default 0)");
-    command->add_option("--tonemap", frame.tonemap, "none, reinhard, reinhard-ext, aces, neutral (default)");
-    command->add_option("--brdf-g", frame.brdfG, "masking-shadowing: smith-ggx (glTF, default) or schlick-ggx (UE4)");
+    command->add_option("--tonemap", frame.tonemap, "none, reinhard, reinhard-ext, aces, neutral (default), agx");
+    command->add_option("--brdf-g", frame.brdfG, "masking-shadowing G: smith-ggx (glTF, default), smith-ggx-correlated, schlick-ggx (UE4), neumann, kelemen, cook-torrance, implicit");
+    command->add_option("--brdf-d", frame.brdfD, "normal distribution D: ggx (default), beckmann, blinn-phong");
+    command->add_option("--brdf-f", frame.brdfF, "Fresnel F: schlick (default), schlick-sg (UE4), none");
+    command->add_option("--brdf-diffuse", frame.brdfDiffuse, "diffuse lobe: lambert (default), oren-nayar, burley");
+    command->add_option("--shading", frame.shading, "every material's shading model: pbr, unlit, flat, gouraud, phong, blinn-phong, doom");
+    command->add_option("--debug-view", frame.debugView,
+                        "show one buffer: base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, brdf-f, ssao, bloom");
     command->add_option("--camera", frame.camera, "index of the scene camera to use (default: the first, else framed)");
     command->add_flag("--no-default-lights", frame.noDefaultLights, "never add the default light rig");
     command->add_option("--env", frame.env, "environment: an equirectangular .hdr or .exr, sky (procedural, the default) or none");
@@ -28,8 +35,11 @@ void addFrameOptions(CLI::App* command, cli::FrameOptions& frame)
     command->add_option("--env-rotation", frame.envRotation, "turns the environment about +Y, degrees");
     command->add_option("--skybox", frame.skybox, "on (default), off, or blur=R (R = roughness 0..1)");
     command->add_option("--bake-preset", frame.bakePreset, "default, or reference (the LearnOpenGL tutorial's bake sizes)");
+    command->add_option("--energy-compensation", frame.energyCompensation,
+                        "multiple-scattering compensation of the specular lobe: on (default) or off (exactly the glTF BRDF)");
     command->add_flag("--no-cache", frame.noCache, "bake the environment even if the bake cache holds it, and do not cache");
     command->add_flag("--gizmos", frame.gizmos, "draw every light as a disc in the light's colour");
+    cli::addPostOptions(command, frame.post);
 }
 
 } // namespace
@@ -49,6 +59,8 @@ int main(int argc, char** argv)
     renderCommand->add_option("scene", render.scene, "a .gltf, .glb or .json scene, or a built-in: demo (default), learnopengl, learnopengl-ibl");
     renderCommand->add_option("-o,--output", render.output, "output image: .png (tone-mapped sRGB), .hdr or .exr (linear radiance x 2^EV)");
     addFrameOptions(renderCommand, render.frame);
+    renderCommand->add_flag("--stats", render.stats,
+                            "print the GPU time of each pass (median of 9 more frames, timer queries) to stdout");
 
     CLI::App* infoCommand = app.add_subcommand("info", "print the OpenGL vendor, renderer, version and limits");
 
@@ -66,6 +78,23 @@ int main(int argc, char** argv)
     bakeCommand->add_option("--bake-preset", bake.preset, "default, or reference (the LearnOpenGL tutorial's bake sizes)");
     bakeCommand->add_option("--cache-dir", bake.cacheDirectory, "where to write (default: $SPECULA_CACHE_DIR, $XDG_CACHE_HOME/specula or ~/.cache/specula)");
 
+    viewer::ViewArgs view;
+    CLI::App* viewCommand = app.add_subcommand("view", "open a window on a scene, with panels (docs/viewer.md)");
+    viewCommand->add_option("scene", view.scene, "a .gltf, .glb or .json scene, or a built-in: demo (default), learnopengl, learnopengl-ibl");
+    viewCommand->add_option("--frames", view.frames, "render N frames (after --script), then exit");
+    viewCommand->add_option("--screenshot", view.screenshot, "with --frames: write the last frame as PNG");
+    viewCommand->add_option("--script", view.script, "replay UI actions from FILE (docs/viewer.md)");
+    viewCommand->add_flag("--hide-ui", view.hideUi, "start with the panels hidden (H shows them)");
+    addFrameOptions(viewCommand, view.frame);
+
+    cli::GalleryArgs gallery;
+    CLI::App* galleryCommand = app.add_subcommand("gallery", "render a scene once per shading model into a labelled contact sheet");
+    galleryCommand->add_option("scene", gallery.scene, "a .gltf, .glb or .json scene, or a built-in (default: demo)");
+    galleryCommand->add_option("-o,--output", gallery.output, "the contact sheet, PNG (default gallery.png)");
+    galleryCommand->add_flag("--variants", gallery.variants, "also one tile per D, G, F and diffuse choice (physically based)");
+    galleryCommand->add_option("--columns", gallery.columns, "tiles per row (default 3)");
+    addFrameOptions(galleryCommand, gallery.frame);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -74,9 +103,11 @@ int main(int argc, char** argv)
 
     try {
         if (*renderCommand) return cli::runRender(render);
+        if (*galleryCommand) return cli::runGallery(gallery);
         if (*infoCommand) return cli::runInfo();
         if (*benchCommand) return cli::runBench(bench);
         if (*bakeCommand) return cli::runBake(bake);
+        if (*viewCommand) return viewer::runView(view);
     } catch (const Error& e) {
         std::fprintf(stderr, "specula: error: %s\n", e.what());
         return 1;

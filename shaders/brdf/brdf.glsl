@@ -1,10 +1,19 @@
 // The BRDF dispatch: pass shaders call evaluateBrdf and never a term directly.
 // Default: the glTF 2.0 specification, Appendix B (metal-rough, GGX, separable Smith,
-// Schlick Fresnel, Lambert weighted by 1 - F). Variants come from defines:
-//   BRDF_G_SCHLICK_GGX  Schlick-GGX masking with k = (r + 1)^2 / 8 (UE4)
+// Schlick Fresnel, Lambert weighted by 1 - F). Variants come from defines, at most one per
+// group (render/ShadingVariant makes them from a material's scene::MaterialShading):
+//   D        BRDF_D_BECKMANN, BRDF_D_BLINN_PHONG                         (else GGX)
+//   G        BRDF_G_SCHLICK_GGX (Schlick-GGX, k = (r + 1)^2 / 8, UE4), BRDF_G_SMITH_GGX_CORRELATED,
+//            BRDF_G_NEUMANN, BRDF_G_KELEMEN, BRDF_G_COOK_TORRANCE, BRDF_G_IMPLICIT (else separable Smith)
+//   F        BRDF_F_SCHLICK_SG, BRDF_F_NONE                              (else Schlick)
+//   diffuse  BRDF_DIFFUSE_OREN_NAYAR, BRDF_DIFFUSE_BURLEY                (else Lambert)
+// Every variant keeps the glTF mix: (1 - F) x diffuse + F x D x V.
 #include "../common/math.glsl"
 #include "ggx.glsl"
+#include "beckmann.glsl"
+#include "blinn_phong.glsl"
 #include "smith.glsl"
+#include "masking.glsl"
 #include "fresnel.glsl"
 #include "diffuse.glsl"
 
@@ -29,6 +38,59 @@ SurfaceBrdf makeSurfaceBrdf(vec3 baseColor, float metallic, float perceptualRoug
     return s;
 }
 
+float brdfD(float NoH, float alpha)
+{
+#if defined(BRDF_D_BECKMANN)
+    return D_Beckmann(NoH, alpha);
+#elif defined(BRDF_D_BLINN_PHONG)
+    return D_BlinnPhong(NoH, alpha);
+#else
+    return D_GGX(NoH, alpha);
+#endif
+}
+
+// Visibility V = G / (4 NoL NoV).
+float brdfV(SurfaceBrdf s, float NoV, float NoL, float NoH, float VoH)
+{
+#if defined(BRDF_G_SCHLICK_GGX)
+    return V_SchlickGGX(NoV, NoL, s.perceptualRoughness);
+#elif defined(BRDF_G_SMITH_GGX_CORRELATED)
+    return V_SmithGGXCorrelated(NoV, NoL, s.alpha);
+#elif defined(BRDF_G_NEUMANN)
+    return V_Neumann(NoV, NoL);
+#elif defined(BRDF_G_KELEMEN)
+    return V_Kelemen(VoH);
+#elif defined(BRDF_G_COOK_TORRANCE)
+    return V_CookTorrance(NoV, NoL, NoH, VoH);
+#elif defined(BRDF_G_IMPLICIT)
+    return V_Implicit();
+#else
+    return V_SmithGGX(NoV, NoL, s.alpha);
+#endif
+}
+
+vec3 brdfF(SurfaceBrdf s, float VoH)
+{
+#if defined(BRDF_F_SCHLICK_SG)
+    return F_SchlickSG(s.f0, s.f90, VoH);
+#elif defined(BRDF_F_NONE)
+    return F_None(s.f0);
+#else
+    return F_Schlick(s.f0, s.f90, VoH);
+#endif
+}
+
+vec3 brdfDiffuse(SurfaceBrdf s, float NoV, float NoL, float LoH, float VoL)
+{
+#if defined(BRDF_DIFFUSE_OREN_NAYAR)
+    return Fd_OrenNayar(s.diffuseColor, s.perceptualRoughness, NoV, NoL, VoL);
+#elif defined(BRDF_DIFFUSE_BURLEY)
+    return Fd_Burley(s.diffuseColor, s.perceptualRoughness, NoV, NoL, LoH);
+#else
+    return Fd_Lambert(s.diffuseColor);
+#endif
+}
+
 // f(l, v) for unit vectors n, v, l, split into its diffuse and specular lobes (1/sr), not
 // yet multiplied by NoL.
 void evaluateBrdfLobes(SurfaceBrdf s, vec3 n, vec3 v, vec3 l, out vec3 diffuse, out vec3 specular)
@@ -38,15 +100,11 @@ void evaluateBrdfLobes(SurfaceBrdf s, vec3 n, vec3 v, vec3 l, out vec3 diffuse, 
     float NoL = saturate(dot(n, l));
     float NoH = saturate(dot(n, h));
     float VoH = saturate(dot(v, h));
-    vec3 F = F_Schlick(s.f0, s.f90, VoH);
-    float D = D_GGX(NoH, s.alpha);
-#if defined(BRDF_G_SCHLICK_GGX)
-    float V = V_SchlickGGX(NoV, NoL, s.perceptualRoughness);
-#else
-    float V = V_SmithGGX(NoV, NoL, s.alpha);
-#endif
+    vec3 F = brdfF(s, VoH);
+    float D = brdfD(NoH, s.alpha);
+    float V = brdfV(s, NoV, NoL, NoH, VoH);
     specular = F * (D * V);
-    diffuse = (1.0 - F) * Fd_Lambert(s.diffuseColor);
+    diffuse = (1.0 - F) * brdfDiffuse(s, NoV, NoL, VoH, dot(v, l));
 }
 
 vec3 evaluateBrdf(SurfaceBrdf s, vec3 n, vec3 v, vec3 l)

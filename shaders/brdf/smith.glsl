@@ -20,3 +20,14 @@ float V_SchlickGGX(float NoV, float NoL, float perceptualRoughness)
     // The 1e-7 keeps grazing NoL = NoV = 0 finite; those samples carry no energy.
     return gl * gv / max(4.0 * NoL * NoV, 1e-7);
 }
+
+// Height-correlated Smith G for GGX: Heitz 2014, "Understanding the Masking-Shadowing Function
+// in Microfacet-Based BRDFs", eq. 99, written as V (Lagarde & de Rousiers 2014, eq. 3; Filament).
+float V_SmithGGXCorrelated(float NoV, float NoL, float alpha)
+{
+    float a2 = alpha * alpha;
+    float lambdaV = NoL * sqrt(NoV * NoV * (1.0 - a2) + a2);
+    float lambdaL = NoV * sqrt(NoL * NoL * (1.0 - a2) + a2);
+    // 1e-7: grazing NoL = NoV = 0 carries no energy but would divide by zero.
+    return 0.5 / max(lambdaV + lambdaL, 1e-7);
+}

@@ -45,6 +45,17 @@ const float kMinPerceptualRoughness = 0.045;
 const float kHalfMax = 65504.0;
 
 #include "texture_uv.glsl"
+#include "shading_models.glsl"
+#include "debug_views.glsl"
+
+vec3 materialEmissive()
+{
+    vec3 emissive = material.emissive.rgb;
+#if defined(HAS_EMISSIVE_TEXTURE)
+    emissive *= texture(uEmissiveTexture, textureUv(TEX_EMISSIVE)).rgb;
+#endif
+    return emissive;
+}
 
 void main()
 {
@@ -96,6 +107,26 @@ void main()
 #endif
 
     vec3 v = normalize(frame.cameraPosition.xyz - vWorldPosition);
+    float occlusion = 1.0;
+#if defined(HAS_OCCLUSION_TEXTURE)
+    occlusion = 1.0 + params.w * (texture(uOcclusionTexture, textureUv(TEX_OCCLUSION)).r - 1.0);
+#endif
+#if defined(SSAO)
+    // Screen-space ambient occlusion (render/SsaoPass), same size as this target: it scales
+    // the material's occlusion, so it darkens ambient light only, never the lights above.
+    occlusion *= texelFetch(uSsao, ivec2(gl_FragCoord.xy), 0).r;
+#endif
+
+#if defined(DEBUG_VIEW)
+    // One input or BRDF term instead of the frame (debug_views.glsl).
+    outColor = vec4(debugViewValue(baseColor.rgb, metallic, perceptualRoughness, n, v, occlusion, materialEmissive()), 1.0);
+    return;
+#elif defined(SHADING_CLASSIC)
+    // The models before physically based shading (shading_models.glsl): no BRDF, no split sum.
+    outColor = vec4(min(shadeClassic(baseColor.rgb, metallic, perceptualRoughness, n, v, occlusion, materialEmissive()), vec3(kHalfMax)), alpha);
+    return;
+#endif
+
     SurfaceBrdf surface = makeSurfaceBrdf(baseColor.rgb, metallic, perceptualRoughness, material.specular);
 
     float NoV = max(dot(n, v), 1e-4); // 1e-4: normal-mapped texels can face away from the viewer
@@ -125,15 +156,6 @@ void main()
         color += (diffuse + specular * energyCompensation) * illuminance * NoL;
     }
 
-    float occlusion = 1.0;
-#if defined(HAS_OCCLUSION_TEXTURE)
-    occlusion = 1.0 + params.w * (texture(uOcclusionTexture, textureUv(TEX_OCCLUSION)).r - 1.0);
-#endif
-#if defined(SSAO)
-    // Screen-space ambient occlusion (render/SsaoPass), same size as this target: it scales
-    // the material's occlusion, so it darkens ambient light only, never the lights above.
-    occlusion *= texelFetch(uSsao, ivec2(gl_FragCoord.xy), 0).r;
-#endif
     // Constant ambient (non-physical, 0 unless a scene asks): lights the diffuse part only.
     color += frame.ambient.rgb * surface.diffuseColor * occlusion;
 
@@ -151,11 +173,7 @@ void main()
     color += (diffuseIbl * occlusion + specularIbl * specularAo) * environment.params.x;
 #endif
 
-    vec3 emissive = material.emissive.rgb;
-#if defined(HAS_EMISSIVE_TEXTURE)
-    emissive *= texture(uEmissiveTexture, textureUv(TEX_EMISSIVE)).rgb;
-#endif
-    color += emissive;
+    color += materialEmissive();
 
     outColor = vec4(min(color, vec3(kHalfMax)), alpha);
 }

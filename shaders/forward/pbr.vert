@@ -1,9 +1,19 @@
 #version 450 core
-// Forward pass vertex shader: world-space position, normal and tangent for lighting.
+// Forward pass vertex shader: world-space position, normal and tangent for lighting. With
+// SHADING_GOURAUD it also lights each vertex (Gouraud 1971) with the Phong model.
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
 
 layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
+#if defined(SHADING_GOURAUD)
+#include "../shared/LightData.h"
+#include "../shared/MaterialData.h"
+layout(std140, binding = SPECULA_BINDING_LIGHTS) uniform LightsBlock { LightBlock lightData; };
+layout(std140, binding = SPECULA_BINDING_MATERIAL) uniform MaterialBlock { GpuMaterial material; };
+#include "classic_lighting.glsl"
+out vec3 vGouraudDiffuse;
+out vec3 vGouraudSpecular;
+#endif
 
 layout(location = SPECULA_ATTRIB_POSITION) in vec3 aPosition;
 layout(location = SPECULA_ATTRIB_NORMAL) in vec3 aNormal;
@@ -32,4 +42,11 @@ void main()
     vUv1 = aUv1;
     vColor = aColor;
     gl_Position = frame.viewProjection * world;
+#if defined(SHADING_GOURAUD)
+    // Roughness without its texture: a vertex has no texel of its own.
+    float perceptualRoughness = clamp(material.params.y, 0.045, 1.0);
+    vec3 n = normalize(vNormal);
+    vec3 v = normalize(frame.cameraPosition.xyz - world.xyz);
+    classicLighting(world.xyz, n, v, classicShininess(perceptualRoughness), false, vGouraudDiffuse, vGouraudSpecular);
+#endif
 }

@@ -1,6 +1,7 @@
 #version 450 core
-// Depth/normal pre-pass for SSAO (render/SsaoPass): depth, and the view-space normal of the
-// triangle itself, from the derivatives of the view-space position. The face normal is the
+// Depth/normal pre-pass for SSAO (render/SsaoPass): the view-space normal of the triangle
+// itself, from the derivatives of the view-space position, and the view-space z (32-bit float:
+// the SSAO passes read position and normal in one fetch). The face normal is the
 // plane the depth buffer holds, so a hemisphere around it never dips below a flat facet (an
 // interpolated vertex normal tilts against it and would self-occlude tessellated curves);
 // it also faces the camera on both sides of double-sided surfaces. Normal maps are left to
@@ -40,5 +41,5 @@ void main()
     vec3 n = cross(dFdx(p), dFdy(p));
     // A triangle seen exactly edge-on has no area on screen: any normal will do.
     n = dot(n, n) > 1e-30 ? normalize(n) : vec3(0.0, 0.0, 1.0);
-    outNormal = vec4(n, 0.0);
+    outNormal = vec4(n, p.z);
 }

@@ -11,15 +11,17 @@
 // Jimenez 2014's "partial Karis average"), so one very bright pixel cannot dominate its box.
 #include "../shared/Bindings.h"
 #include "../common/color.glsl"
+#include "bloom.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-// Bilinear, mirrored at the border (see BloomPass.cpp: keeps the energy of edge pixels).
+// Bilinear, clamped to the edge (taps are reflected into the image before they sample).
 layout(binding = SPECULA_UNIT_POST_INPUT) uniform sampler2D uSource;
 layout(binding = SPECULA_IMAGE_POST_OUTPUT, rgba16f) uniform writeonly image2D uTarget;
 
 uniform ivec2 uTargetSize;
 uniform vec2 uSourceTexel;   // 1 / source size
+uniform vec2 uSourceExtent;  // where the frame ends in the source, in its texels (see bloom.glsl)
 uniform vec4 uThreshold;     // x threshold (0 = off), y knee half-width, z exposure scale
 
 // Largest finite half float: the target is RGBA16F.
@@ -27,7 +29,7 @@ const float kHalfMax = 65504.0;
 
 vec3 tap(vec2 centre, vec2 offset)
 {
-    return textureLod(uSource, centre + offset * uSourceTexel, 0.0).rgb;
+    return textureLod(uSource, reflectIntoFrame(centre + offset, uSourceExtent) * uSourceTexel, 0.0).rgb;
 }
 
 #if defined(FIRST_LEVEL)
@@ -60,8 +62,8 @@ void main()
     if (any(greaterThanEqual(p, uTargetSize))) return;
     // Target texel p covers source texels 2p and 2p + 1: its centre is their shared corner.
     // Target sizes are rounded up, so an odd last row or column of the source still has a
-    // texel below it (which reads the mirrored edge for its missing half).
-    vec2 c = vec2(2 * p + 1) * uSourceTexel;
+    // texel below it (whose missing half reads the reflection of the frame's edge).
+    vec2 c = vec2(2 * p + 1);
 
     vec3 a = tap(c, vec2(-2.0, -2.0));
     vec3 b = tap(c, vec2(0.0, -2.0));

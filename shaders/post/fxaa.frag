@@ -5,14 +5,13 @@
 // until the edge ends, and re-sample the image shifted across the edge by how far this pixel
 // is from the nearer end; plus a sub-pixel blend for features smaller than a pixel.
 //
-// The input is the tone-mapped image in an sRGB texture: fetches return linear values, so the
-// re-sampling blends light linearly, and the output is encoded again by the sRGB target. Edge
-// detection wants perceptual luma, so luma is taken as sqrt(luminance) (gamma 2, as FXAA's
-// own "luma from green" shortcut assumes gamma-encoded input).
+// The input is the tone-mapped image already sRGB-encoded, in a UNORM texture: luma is taken
+// from perceptual values and the re-sampling blends them, as FXAA was designed (its input is
+// gamma-encoded LDR). The output is written as is to the sRGB target (no second encoding).
 #include "../shared/Bindings.h"
 #include "../common/color.glsl"
 
-layout(binding = SPECULA_UNIT_POST_INPUT) uniform sampler2D uInput; // bilinear, clamp to edge
+layout(binding = SPECULA_UNIT_POST_INPUT) uniform sampler2D uInput; // sRGB-encoded; bilinear, clamp to edge
 
 uniform vec2 uTexel; // 1 / size
 
@@ -28,7 +27,7 @@ const float kStepSizes[kSteps] = float[](1.0, 1.0, 1.0, 1.0, 1.0, 1.5, 2.0, 2.0,
 
 float luma(vec3 c)
 {
-    return sqrt(luminance(c));
+    return luminance(c); // Rec. 709 weights on encoded values: FXAA's luma
 }
 
 float lumaAt(vec2 uv)
@@ -36,19 +35,24 @@ float lumaAt(vec2 uv)
     return luma(textureLod(uInput, uv, 0.0).rgb);
 }
 
-// A macro, not a function: textureLodOffset's offset must be a constant expression, which a
-// function parameter is not (Mesa inlines and accepts it; glslang and the spec do not).
-#define lumaOffset(uv, offset) luma(textureLodOffset(uInput, uv, 0.0, offset).rgb)
+// The 3x3 neighbourhood lies on pixel centres: unfiltered fetches, which cost far less than
+// bilinear ones of the same texels (on llvmpipe every fetch of a shader runs, branch or not),
+// clamped at the border as the sampler would be.
+float lumaFetch(ivec2 p)
+{
+    return luma(texelFetch(uInput, clamp(p, ivec2(0), textureSize(uInput, 0) - 1), 0).rgb);
+}
 
 void main()
 {
     vec2 uv = gl_FragCoord.xy * uTexel;
-    vec3 centreColor = textureLod(uInput, uv, 0.0).rgb;
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec3 centreColor = texelFetch(uInput, p, 0).rgb;
     float lumaCentre = luma(centreColor);
-    float lumaDown = lumaOffset(uv, ivec2(0, -1));
-    float lumaUp = lumaOffset(uv, ivec2(0, 1));
-    float lumaLeft = lumaOffset(uv, ivec2(-1, 0));
-    float lumaRight = lumaOffset(uv, ivec2(1, 0));
+    float lumaDown = lumaFetch(p + ivec2(0, -1));
+    float lumaUp = lumaFetch(p + ivec2(0, 1));
+    float lumaLeft = lumaFetch(p + ivec2(-1, 0));
+    float lumaRight = lumaFetch(p + ivec2(1, 0));
     float lumaMin = min(lumaCentre, min(min(lumaDown, lumaUp), min(lumaLeft, lumaRight)));
     float lumaMax = max(lumaCentre, max(max(lumaDown, lumaUp), max(lumaLeft, lumaRight)));
     float range = lumaMax - lumaMin;
@@ -58,10 +62,10 @@ void main()
         return;
     }
 
-    float lumaDownLeft = lumaOffset(uv, ivec2(-1, -1));
-    float lumaUpRight = lumaOffset(uv, ivec2(1, 1));
-    float lumaUpLeft = lumaOffset(uv, ivec2(-1, 1));
-    float lumaDownRight = lumaOffset(uv, ivec2(1, -1));
+    float lumaDownLeft = lumaFetch(p + ivec2(-1, -1));
+    float lumaUpRight = lumaFetch(p + ivec2(1, 1));
+    float lumaUpLeft = lumaFetch(p + ivec2(-1, 1));
+    float lumaDownRight = lumaFetch(p + ivec2(1, -1));
     float lumaDownUp = lumaDown + lumaUp;
     float lumaLeftRight = lumaLeft + lumaRight;
     float lumaLeftCorners = lumaDownLeft + lumaUpLeft;

@@ -17,6 +17,10 @@ layout(binding = SPECULA_UNIT_POST_INPUT) uniform sampler2D uHdr;
 
 uniform ivec2 uSize;
 
+// 10^-6 cd/m²: far below anything an eye or a camera meters (starlight is ~10^-3), above
+// rounding noise of a black pixel.
+const float kBlack = 1e-6;
+
 shared uint sCounts[SPECULA_HISTOGRAM_BINS];
 shared uint sPositions[SPECULA_HISTOGRAM_BINS];
 
@@ -31,8 +35,10 @@ void main()
     if (all(lessThan(p, uSize))) {
         float lum = luminance(texelFetch(uHdr, p, 0).rgb);
         float minLog = params.histogram.x, maxLog = params.histogram.y;
-        // Below the range (black included) the pixel goes to bin 0, which the average skips.
-        if (lum > exp2(minLog)) {
+        // Black (nothing drawn, or unlit and not emitting) goes to bin 0, which the average
+        // skips: a small object against black is exposed for itself. Anything else outside
+        // the range is clamped into the first or last bin.
+        if (lum > kBlack) {
             const float bins = float(SPECULA_HISTOGRAM_BINS - 1);
             // Just below the top, so the brightest pixels land in the last bin, not past it.
             float x = clamp((log2(lum) - minLog) / (maxLog - minLog), 0.0, 1.0) * bins;

@@ -12,8 +12,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std140, binding = SPECULA_BINDING_SSAO) uniform SsaoBlock { SsaoData ssao; };
-layout(binding = SPECULA_UNIT_POST_INPUT) uniform sampler2D uDepth;
-layout(binding = SPECULA_UNIT_POST_INPUT_1) uniform sampler2D uNormal;
+layout(binding = SPECULA_UNIT_POST_INPUT) uniform sampler2D uGeometry; // view normal, view z
 layout(binding = SPECULA_UNIT_POST_INPUT_2) uniform sampler2D uNoise;
 layout(binding = SPECULA_IMAGE_POST_OUTPUT, r16f) uniform writeonly image2D uOcclusion;
 
@@ -24,14 +23,14 @@ void main()
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = ivec2(ssao.size.xy);
     if (any(greaterThanEqual(p, size))) return;
-    float depth = texelFetch(uDepth, p, 0).r;
-    // Nothing drawn here (the far plane): nothing to occlude.
-    if (depth >= 1.0) {
+    vec4 geometry = texelFetch(uGeometry, p, 0);
+    // Nothing drawn here: nothing to occlude.
+    if (nothingAt(geometry)) {
         imageStore(uOcclusion, p, vec4(1.0));
         return;
     }
-    vec3 position = viewPosition(p, depth);
-    vec3 n = texelFetch(uNormal, p, 0).xyz;
+    vec3 position = viewPosition(p, geometry.w);
+    vec3 n = geometry.xyz;
     vec3 random = vec3(texelFetch(uNoise, p % SPECULA_SSAO_NOISE_SIZE, 0).xy, 0.0);
     // Gram-Schmidt: a tangent from the random vector, unless it is nearly the normal itself.
     vec3 t = random - n * dot(random, n);
@@ -50,7 +49,10 @@ void main()
         // Off screen there is no depth to test against: counts as open, so borders never
         // darken for lack of information.
         if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;
-        float sceneZ = viewPositionAt(ivec2(uv * ssao.size.xy)).z;
+        ivec2 q = ivec2(uv * ssao.size.xy);
+        vec4 qGeometry = texelFetch(uGeometry, q, 0);
+        if (nothingAt(qGeometry)) continue; // nothing drawn there: nothing occludes
+        float sceneZ = surfaceDepthAlong(s, viewPosition(q, qGeometry.w), qGeometry.xyz);
         // View space looks down -z: the sample is hidden when the surface there is nearer.
         float hidden = sceneZ >= s.z + bias ? 1.0 : 0.0;
         // Range check: an occluder far in front of this point (another object) counts less

@@ -10,8 +10,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std140, binding = SPECULA_BINDING_SSAO) uniform SsaoBlock { SsaoData ssao; };
-layout(binding = SPECULA_UNIT_POST_INPUT) uniform sampler2D uDepth;
-layout(binding = SPECULA_UNIT_POST_INPUT_1) uniform sampler2D uNormal;
+layout(binding = SPECULA_UNIT_POST_INPUT) uniform sampler2D uGeometry; // view normal, view z
 layout(binding = SPECULA_UNIT_POST_INPUT_2) uniform sampler2D uRawOcclusion;
 layout(binding = SPECULA_IMAGE_POST_OUTPUT, r16f) uniform writeonly image2D uOcclusion;
 
@@ -22,13 +21,13 @@ void main()
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = ivec2(ssao.size.xy);
     if (any(greaterThanEqual(p, size))) return;
-    float depth = texelFetch(uDepth, p, 0).r;
-    if (depth >= 1.0) {
+    vec4 geometry = texelFetch(uGeometry, p, 0);
+    if (nothingAt(geometry)) {
         imageStore(uOcclusion, p, vec4(1.0));
         return;
     }
-    vec3 position = viewPosition(p, depth);
-    vec3 n = texelFetch(uNormal, p, 0).xyz;
+    vec3 position = viewPosition(p, geometry.w);
+    vec3 n = geometry.xyz;
     // Neighbours within 5% of the distance (or a tenth of the radius, up close) of this
     // plane belong to the same surface.
     float tolerance = max(0.05 * abs(position.z), 0.1 * ssao.params.x);
@@ -36,9 +35,9 @@ void main()
     for (int y = -2; y < 2; ++y) {
         for (int x = -2; x < 2; ++x) {
             ivec2 q = clamp(p + ivec2(x, y), ivec2(0), size - 1);
-            float d = texelFetch(uDepth, q, 0).r;
-            if (d >= 1.0) continue;
-            float distance = abs(dot(viewPosition(q, d) - position, n));
+            vec4 g = texelFetch(uGeometry, q, 0);
+            if (nothingAt(g)) continue;
+            float distance = abs(dot(viewPosition(q, g.w) - position, n));
             float w = max(1.0 - distance / tolerance, 0.0);
             sum += texelFetch(uRawOcclusion, q, 0).r * w;
             weightSum += w;

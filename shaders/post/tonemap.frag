@@ -2,7 +2,8 @@
 // Exposure and tone mapping: the last pass, into an 8-bit sRGB target (GL encodes with
 // GL_FRAMEBUFFER_SRGB, the exact IEC 61966-2-1 curve). With MSAA_SAMPLES defined it also
 // resolves: the box average of the linear HDR samples, the same as a blit resolve. With
-// AUTO_EXPOSURE the exposure measured on the GPU multiplies frame.exposure.x.
+// AUTO_EXPOSURE the exposure measured on the GPU multiplies frame.exposure.x. With ENCODE_SRGB
+// it encodes itself, for a UNORM target (FXAA's input).
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
 #include "../common/color.glsl"
@@ -42,5 +43,11 @@ void main()
 #endif
     vec3 hdr = fetchRadiance(ivec2(gl_FragCoord.xy)) * exposure;
     vec3 mapped = tonemap(max(hdr, vec3(0.0)), frame.options.x, frame.exposure.y);
+#if defined(ENCODE_SRGB)
+    // Into FXAA's 8-bit UNORM input, encoded here with the same curve: FXAA works on
+    // perceptual values, and reading UNORM is cheaper than decoding sRGB at every fetch.
+    outColor = vec4(linearToSrgb(clamp(mapped, 0.0, 1.0)), 1.0);
+#else
     outColor = vec4(clamp(mapped, 0.0, 1.0), 1.0);
+#endif
 }

@@ -21,7 +21,7 @@ SPECULA_SHARED_BEGIN
 
 struct GpuMaterial {
     vec4 baseColorFactor;
-    vec4 emissive;        // rgb emissive factor x KHR_materials_emissive_strength, w unused
+    vec4 emissive;        // rgb emissive factor x KHR_materials_emissive_strength, w Doom sector light / 255
     vec4 params;          // x metallic, y perceptual roughness, z normal scale, w occlusion strength
     vec4 alpha;           // x alpha cutoff
     uvec4 flags;          // x SPECULA_MATERIAL_* bits; y texCoord sets, 2 bits per texture

@@ -17,9 +17,9 @@ SPECULA_SHARED_BEGIN
 
 struct SsaoData {
     mat4 projection;
-    mat4 inverseProjection;
     vec4 params;  // x radius (m), y bias (m), z power, w sample count
     vec4 size;    // xy target size in pixels, zw 1 / size
+    vec4 options; // x 1 for an orthographic projection, else 0
     vec4 kernel[SPECULA_SSAO_MAX_SAMPLES]; // xyz hemisphere offsets (tangent space, z up, length <= 1)
 };
 
@@ -37,7 +37,7 @@ struct ExposureState {
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::SsaoData) == 2 * 64 + 2 * 16 + SPECULA_SSAO_MAX_SAMPLES * 16);
+static_assert(sizeof(specula::shared::SsaoData) == 64 + 3 * 16 + SPECULA_SSAO_MAX_SAMPLES * 16);
 static_assert(sizeof(specula::shared::ExposureParams) == 3 * 16);
 static_assert(sizeof(specula::shared::ExposureState) == 16);
 #endif

@@ -173,6 +173,11 @@ void State::apply(const PipelineDesc& p)
     mPipelineKnown = true;
 }
 
+void finish()
+{
+    glFinish();
+}
+
 void bindUniformBuffer(uint32_t binding, const Buffer& buffer)
 {
     glBindBufferBase(GL_UNIFORM_BUFFER, binding, buffer.id());

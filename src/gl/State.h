@@ -97,6 +97,9 @@ private:
     int mDrawCalls = 0;
 };
 
+/// Waits until every command issued so far has finished (glFinish): for measurements only.
+void finish();
+
 void bindUniformBuffer(uint32_t binding, const Buffer& buffer);
 void bindUniformBufferRange(uint32_t binding, const Buffer& buffer, size_t offset, size_t size);
 /// GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT of the current context.

@@ -169,6 +169,12 @@ void Texture::upload(int level, int layer, int channels, PixelType type, const v
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
 }
 
+void Texture::clear(int level)
+{
+    const GLenum format = isDepth() ? GL_DEPTH_COMPONENT : GL_RGBA;
+    glClearTexImage(mHandle.get(), level, format, GL_FLOAT, nullptr);
+}
+
 void Texture::generateMipmaps()
 {
     if (mDesc.levels > 1) glGenerateTextureMipmap(mHandle.get());

@@ -48,6 +48,8 @@ public:
     /// `channels` is 1..4; rows are tightly packed, first row at the bottom (GL convention).
     void upload(int level, int layer, int channels, PixelType type, const void* pixels);
     void generateMipmaps();
+    /// Sets every texel of `level` to zero (glClearTexImage).
+    void clear(int level = 0);
     /// Reads a whole level of layer 0 back (stalls); size = levelWidth*levelHeight*channels.
     std::vector<float> readFloat(int level = 0, int channels = 4) const;
     std::vector<uint8_t> readBytes(int level = 0, int channels = 4) const;

@@ -7,7 +7,6 @@
 
 #include <glm/glm.hpp>
 
-#include "gl/Debug.h"
 #include "gl/Program.h"
 #include "gl/State.h"
 #include "gl/Texture.h"
@@ -26,12 +25,12 @@ uint32_t groups(int size)
 
 struct DownsampleProgram {
     gl::Program program;
-    int targetSize = -1, sourceTexel = -1, threshold = -1;
+    int targetSize = -1, sourceTexel = -1, sourceExtent = -1, threshold = -1;
 };
 
 struct UpsampleProgram {
     gl::Program program;
-    int targetSize = -1, lowerTexel = -1, radius = -1, keep = -1, scale = -1;
+    int targetSize = -1, lowerTexel = -1, lowerExtent = -1, radius = -1, keep = -1, scale = -1;
 };
 
 } // namespace
@@ -39,14 +38,11 @@ struct UpsampleProgram {
 struct BloomPass::Impl {
     std::map<std::string, DownsampleProgram> downsample; ///< by variant: "first", "first karis", "rest"
     UpsampleProgram upsample;
-    // Bilinear, mirrored at the border: the frame continues as its own reflection. Every
-    // filter here is symmetric and each level's border falls on a texel border of the level
-    // above, so the reflected energy is exactly what would have left the image: the glow of a
-    // light at the edge keeps its energy. (Clamping to the edge instead repeats the border
-    // texel at every level, and the glow of an edge pixel grows several times over.)
-    gl::Sampler linearMirror{{.mipFilter = gl::MipFilter::None, .wrapS = gl::Wrap::MirroredRepeat,
-                              .wrapT = gl::Wrap::MirroredRepeat, .wrapR = gl::Wrap::MirroredRepeat},
-                             "bloom bilinear mirror"};
+    // Bilinear; the shaders reflect every tap into the frame first (shaders/post/bloom.glsl),
+    // so the wrap mode only matters within half a texel of a level's edge.
+    gl::Sampler linearClamp{{.mipFilter = gl::MipFilter::None, .wrapS = gl::Wrap::ClampToEdge,
+                             .wrapT = gl::Wrap::ClampToEdge, .wrapR = gl::Wrap::ClampToEdge},
+                            "bloom bilinear clamp"};
     std::vector<gl::Texture> levels; ///< levels[k] is level k + 1 (level 0 is the frame)
     int width = 0, height = 0;
 
@@ -61,6 +57,7 @@ struct BloomPass::Impl {
             p.program = gl::Program({.compute = "post/bloom_downsample.comp", .defines = defines, .label = "bloom down " + key});
             p.targetSize = p.program.uniformLocation("uTargetSize");
             p.sourceTexel = p.program.uniformLocation("uSourceTexel");
+            p.sourceExtent = p.program.uniformLocation("uSourceExtent");
             p.threshold = p.program.uniformLocation("uThreshold");
         }
         return p;
@@ -72,6 +69,7 @@ struct BloomPass::Impl {
             upsample.program = gl::Program({.compute = "post/bloom_upsample.comp", .label = "bloom up"});
             upsample.targetSize = upsample.program.uniformLocation("uTargetSize");
             upsample.lowerTexel = upsample.program.uniformLocation("uLowerTexel");
+            upsample.lowerExtent = upsample.program.uniformLocation("uLowerExtent");
             upsample.radius = upsample.program.uniformLocation("uRadius");
             upsample.keep = upsample.program.uniformLocation("uKeep");
             upsample.scale = upsample.program.uniformLocation("uScale");
@@ -118,14 +116,21 @@ void BloomPass::prepare(const BloomSettings& settings)
     mImpl->upsampleProgram();
 }
 
-void BloomPass::apply(gl::State& state, const gl::Texture& hdr, const BloomSettings& settings, float exposure,
+void BloomPass::apply(gl::State& state, gl::Texture& hdr, const BloomSettings& settings, float exposure,
                       bool glowOnly)
 {
     Impl& r = *mImpl;
     const int w = hdr.width(), h = hdr.height();
     const int levels = levelsFor(w, h, settings.levels);
-    if (levels == 0) return;
+    if (levels == 0) {
+        // A 1×1 frame has nowhere to spread light: no glow.
+        if (glowOnly) hdr.clear();
+        return;
+    }
     r.ensureLevels(state, w, h);
+
+    // Where the frame ends in level k, in its texels: not a texel edge once a size was odd.
+    auto extent = [&](int k) { return glm::vec2(float(w), float(h)) / float(1 << k); };
 
     // Down: frame → level 1 → … → level `levels`.
     for (int k = 1; k <= levels; ++k) {
@@ -135,10 +140,11 @@ void BloomPass::apply(gl::State& state, const gl::Texture& hdr, const BloomSetti
         state.useProgram(p.program);
         p.program.set(p.targetSize, glm::ivec2(target.width(), target.height()));
         p.program.set(p.sourceTexel, glm::vec2(1.0f / float(source.width()), 1.0f / float(source.height())));
+        p.program.set(p.sourceExtent, extent(k - 1));
         if (k == 1)
             p.program.set(p.threshold, glm::vec4(settings.threshold, settings.knee * settings.threshold, exposure, 0.0f));
         state.bindTexture(SPECULA_UNIT_POST_INPUT, source);
-        state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearMirror);
+        state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearClamp);
         state.bindImage(SPECULA_IMAGE_POST_OUTPUT, target, 0, gl::ImageAccess::WriteOnly);
         state.dispatchCompute(groups(target.width()), groups(target.height()));
         state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::Image);
@@ -154,11 +160,12 @@ void BloomPass::apply(gl::State& state, const gl::Texture& hdr, const BloomSetti
         const bool frame = k == 0;
         p.program.set(p.targetSize, glm::ivec2(target.width(), target.height()));
         p.program.set(p.lowerTexel, glm::vec2(1.0f / float(lower.width()), 1.0f / float(lower.height())));
+        p.program.set(p.lowerExtent, extent(k + 1));
         p.program.set(p.keep, frame && glowOnly ? 0.0f : 1.0f);
         // Level 1 now holds the sum of `levels` blurred copies of the frame.
         p.program.set(p.scale, frame ? std::max(settings.intensity, 0.0f) / float(levels) : 1.0f);
         state.bindTexture(SPECULA_UNIT_POST_INPUT, lower);
-        state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearMirror);
+        state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearClamp);
         state.bindImage(SPECULA_IMAGE_POST_OUTPUT, target, 0, gl::ImageAccess::ReadWrite);
         state.dispatchCompute(groups(target.width()), groups(target.height()));
         state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::Image | gl::Barrier::TextureUpdate |

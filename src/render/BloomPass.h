@@ -5,9 +5,10 @@
 // level added on the way, and the sum blended into the frame:
 //     frame += intensity / levels × Σ_levels blur_level(frame)
 // Every filter's weights sum to 1 and each level conserves energy (value × texel area), so
-// with the firefly filter off the glow adds exactly intensity × the frame's energy (less what
-// leaves through the image border). Level sizes are rounded up (1023 → 512 → 256 …) and each
-// level maps exactly 2:1 onto the one above, so odd sizes lose no edge and stay centred.
+// with the firefly filter off the glow adds intensity × the frame's energy. Level sizes are
+// rounded up (1023 → 512 → 256 …) and each level maps exactly 2:1 onto the one above, so odd
+// sizes lose no edge and stay centred; beyond the border the frame continues as its mirror
+// image (shaders/post/bloom.glsl), so light near the border keeps its glow's energy too.
 #include <memory>
 
 #include "render/PostSettings.h"
@@ -30,7 +31,7 @@ public:
     /// `exposure` is the frame's manual exposure scale (threshold and firefly weights are
     /// judged on exposed values). With `glowOnly` the frame is replaced by the glow it would
     /// get (debug view). Does nothing for a 1×1 frame or zero levels.
-    void apply(gl::State& state, const gl::Texture& hdr, const BloomSettings& settings, float exposure,
+    void apply(gl::State& state, gl::Texture& hdr, const BloomSettings& settings, float exposure,
                bool glowOnly = false);
     /// Compiles the programs now rather than on first use.
     void prepare(const BloomSettings& settings);

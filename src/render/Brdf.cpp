@@ -12,6 +12,19 @@ double D_GGX(double NoH, double alpha)
     return a2 / (kPi * f * f);
 }
 
+double D_Beckmann(double NoH, double alpha)
+{
+    const double a2 = alpha * alpha;
+    const double NoH2 = std::max(NoH * NoH, 1e-8);
+    return std::exp((NoH2 - 1.0) / (a2 * NoH2)) / (kPi * a2 * NoH2 * NoH2);
+}
+
+double D_BlinnPhong(double NoH, double alpha)
+{
+    const double n = 2.0 / (alpha * alpha) - 2.0;
+    return (n + 2.0) / (2.0 * kPi) * std::pow(NoH, n);
+}
+
 double V_SmithGGX(double NoV, double NoL, double alpha)
 {
     const double a2 = alpha * alpha;
@@ -28,11 +41,112 @@ double V_SchlickGGX(double NoV, double NoL, double r)
     return gl * gv / std::max(4.0 * NoL * NoV, 1e-7);
 }
 
+double V_SmithGGXCorrelated(double NoV, double NoL, double alpha)
+{
+    const double a2 = alpha * alpha;
+    const double lambdaV = NoL * std::sqrt(NoV * NoV * (1.0 - a2) + a2);
+    const double lambdaL = NoV * std::sqrt(NoL * NoL * (1.0 - a2) + a2);
+    return 0.5 / std::max(lambdaV + lambdaL, 1e-7);
+}
+
+double V_Neumann(double NoV, double NoL)
+{
+    return 0.25 / std::max(std::max(NoL, NoV), 1e-7);
+}
+
+double V_Kelemen(double VoH)
+{
+    return 0.25 / std::max(VoH * VoH, 1e-7);
+}
+
+double V_CookTorrance(double NoV, double NoL, double NoH, double VoH)
+{
+    const double G = std::min(1.0, 2.0 * NoH * std::min(NoV, NoL) / std::max(VoH, 1e-7));
+    return G / std::max(4.0 * NoL * NoV, 1e-7);
+}
+
+double V_Implicit()
+{
+    return 0.25;
+}
+
 dvec3 F_Schlick(const dvec3& f0, double VoH)
+{
+    return F_Schlick(f0, 1.0, VoH);
+}
+
+dvec3 F_Schlick(const dvec3& f0, double f90, double VoH)
 {
     const double x = 1.0 - VoH;
     const double x5 = x * x * x * x * x;
-    return f0 + (dvec3(1.0) - f0) * x5;
+    return f0 + (dvec3(f90) - f0) * x5;
+}
+
+dvec3 F_SchlickSG(const dvec3& f0, double f90, double VoH)
+{
+    return f0 + (dvec3(f90) - f0) * std::exp2((-5.55473 * VoH - 6.98316) * VoH);
+}
+
+double Fd_Burley(double r, double NoV, double NoL, double LoH)
+{
+    const double f90 = 0.5 + 2.0 * r * LoH * LoH;
+    const double lightScatter = 1.0 + (f90 - 1.0) * std::pow(1.0 - NoL, 5.0);
+    const double viewScatter = 1.0 + (f90 - 1.0) * std::pow(1.0 - NoV, 5.0);
+    return lightScatter * viewScatter / kPi;
+}
+
+double Fd_OrenNayar(double r, double NoV, double NoL, double VoL)
+{
+    const double s2 = r * r;
+    const double A = 1.0 - 0.5 * s2 / (s2 + 0.33);
+    const double B = 0.45 * s2 / (s2 + 0.09);
+    const double s = VoL - NoV * NoL;
+    return (A + B * std::max(s, 0.0) / std::max(std::max(NoL, NoV), 1e-7)) / kPi;
+}
+
+double distribution(Distribution d, double NoH, double alpha)
+{
+    switch (d) {
+    case Distribution::GGX: return D_GGX(NoH, alpha);
+    case Distribution::Beckmann: return D_Beckmann(NoH, alpha);
+    case Distribution::BlinnPhong: return D_BlinnPhong(NoH, alpha);
+    }
+    return 0.0;
+}
+
+double visibility(Geometry g, double NoV, double NoL, double NoH, double VoH, double r)
+{
+    const double alpha = r * r;
+    switch (g) {
+    case Geometry::SmithGGX: return V_SmithGGX(NoV, NoL, alpha);
+    case Geometry::SchlickGGX: return V_SchlickGGX(NoV, NoL, r);
+    case Geometry::SmithGGXCorrelated: return V_SmithGGXCorrelated(NoV, NoL, alpha);
+    case Geometry::Neumann: return V_Neumann(NoV, NoL);
+    case Geometry::Kelemen: return V_Kelemen(VoH);
+    case Geometry::CookTorrance: return V_CookTorrance(NoV, NoL, NoH, VoH);
+    case Geometry::Implicit: return V_Implicit();
+    }
+    return 0.0;
+}
+
+dvec3 fresnel(Fresnel f, const dvec3& f0, double f90, double VoH)
+{
+    switch (f) {
+    case Fresnel::Schlick: return F_Schlick(f0, f90, VoH);
+    case Fresnel::SchlickSG: return F_SchlickSG(f0, f90, VoH);
+    case Fresnel::None: return f0;
+    }
+    return f0;
+}
+
+double diffuseLobe(Diffuse d, double r, double NoV, double NoL, double LoH, double VoL)
+{
+    switch (d) {
+    case Diffuse::Lambert: return 1.0 / kPi;
+    case Diffuse::OrenNayar: return Fd_OrenNayar(r, NoV, NoL, VoL);
+    case Diffuse::Burley: return Fd_Burley(r, NoV, NoL, LoH);
+    }
+    return 0.0;
 }
 
 dvec3 evaluate(const Surface& s, const dvec3& n, const dvec3& v, const dvec3& l)
@@ -45,14 +159,30 @@ dvec3 evaluate(const Surface& s, const dvec3& n, const dvec3& v, const dvec3& l)
     const double NoV = std::abs(glm::dot(n, v));
     const double NoH = std::clamp(glm::dot(n, h), 0.0, 1.0);
     const double VoH = std::clamp(glm::dot(v, h), 0.0, 1.0);
-    const dvec3 f0 = glm::mix(dvec3(0.04 * s.specularFactor), s.baseColor, s.metallic);
+    const dvec3 f0 = glm::mix(dvec3(s.f0Dielectric * s.specularFactor), s.baseColor, s.metallic);
     const double f90 = s.specularFactor + (1.0 - s.specularFactor) * s.metallic;
     const dvec3 diffuseColor = s.baseColor * (1.0 - s.metallic);
-    const double fc = std::pow(1.0 - VoH, 5.0);
-    const dvec3 F = f0 + (dvec3(f90) - f0) * fc;
-    const double D = D_GGX(NoH, alpha);
-    const double V = s.geometry == Geometry::SchlickGGX ? V_SchlickGGX(NoV, NoL, r) : V_SmithGGX(NoV, NoL, alpha);
-    return (dvec3(1.0) - F) * diffuseColor / kPi + F * (D * V);
+    const dvec3 F = fresnel(s.fresnel, f0, f90, VoH);
+    const double D = distribution(s.distribution, NoH, alpha);
+    const double V = visibility(s.geometry, NoV, NoL, NoH, VoH, r);
+    const double Fd = diffuseLobe(s.diffuse, r, NoV, NoL, VoH, glm::dot(v, l));
+    return (dvec3(1.0) - F) * diffuseColor * Fd + F * (D * V);
+}
+
+dvec3 evaluateClassic(const dvec3& kd, const dvec3& ks, double shininess, bool blinn, const dvec3& n, const dvec3& v,
+                      const dvec3& l)
+{
+    const double NoL = glm::dot(n, l);
+    if (NoL <= 0.0) return dvec3(0.0);
+    const double lobe = blinn ? std::clamp(glm::dot(n, glm::normalize(l + v)), 0.0, 1.0)
+                              : std::clamp(glm::dot(glm::reflect(-l, n), v), 0.0, 1.0);
+    return (kd * NoL + ks * std::pow(lobe, shininess)) / kPi;
+}
+
+double classicShininess(double perceptualRoughness)
+{
+    const double alpha = perceptualRoughness * perceptualRoughness;
+    return std::clamp(2.0 / (alpha * alpha) - 2.0, 1.0, 8192.0);
 }
 
 double rangeAttenuation(double range, double distance)

@@ -3,20 +3,43 @@
 // precision, for unit tests and GPU-against-CPU comparisons. Keep the two in step.
 #include <glm/glm.hpp>
 
+#include "scene/MaterialModel.h"
+
 namespace specula::render::brdf {
 
 constexpr double kPi = 3.14159265358979323846;
 /// Same clamp as the shader (Filament's MIN_PERCEPTUAL_ROUGHNESS).
 constexpr double kMinPerceptualRoughness = 0.045;
 
-enum class Geometry { SmithGGX, SchlickGGX };
+using Distribution = scene::BrdfDistribution;
+using Geometry = scene::BrdfGeometry;
+using Fresnel = scene::BrdfFresnel;
+using Diffuse = scene::BrdfDiffuse;
 
 using dvec3 = glm::dvec3;
 
+// The terms, named and cited as in shaders/brdf/. V = G / (4 NoL NoV).
 double D_GGX(double NoH, double alpha);
+double D_Beckmann(double NoH, double alpha);
+double D_BlinnPhong(double NoH, double alpha);
 double V_SmithGGX(double NoV, double NoL, double alpha);
 double V_SchlickGGX(double NoV, double NoL, double perceptualRoughness);
+double V_SmithGGXCorrelated(double NoV, double NoL, double alpha);
+double V_Neumann(double NoV, double NoL);
+double V_Kelemen(double VoH);
+double V_CookTorrance(double NoV, double NoL, double NoH, double VoH);
+double V_Implicit();
 dvec3 F_Schlick(const dvec3& f0, double VoH);
+dvec3 F_Schlick(const dvec3& f0, double f90, double VoH);
+dvec3 F_SchlickSG(const dvec3& f0, double f90, double VoH);
+double Fd_Burley(double perceptualRoughness, double NoV, double NoL, double LoH);    ///< × albedo
+double Fd_OrenNayar(double perceptualRoughness, double NoV, double NoL, double VoL); ///< × albedo
+
+/// The dispatch of shaders/brdf/brdf.glsl, one function per group.
+double distribution(Distribution d, double NoH, double alpha);
+double visibility(Geometry g, double NoV, double NoL, double NoH, double VoH, double perceptualRoughness);
+dvec3 fresnel(Fresnel f, const dvec3& f0, double f90, double VoH);
+double diffuseLobe(Diffuse d, double perceptualRoughness, double NoV, double NoL, double LoH, double VoL); ///< × albedo
 
 struct Surface {
     dvec3 baseColor{1.0};
@@ -24,10 +47,22 @@ struct Surface {
     double perceptualRoughness = 0.5; ///< clamped to kMinPerceptualRoughness like the shader
     Geometry geometry = Geometry::SmithGGX;
     double specularFactor = 1.0; ///< KHR_materials_specular (dielectric F0 and F90)
+    Distribution distribution = Distribution::GGX;
+    Fresnel fresnel = Fresnel::Schlick;
+    Diffuse diffuse = Diffuse::Lambert;
+    double f0Dielectric = 0.04;  ///< scene::f0FromIor(ior) when the material gives an ior
 };
 
 /// f(l, v) (1/sr) for unit n, v, l, not multiplied by NoL. Zero when NoL <= 0.
 dvec3 evaluate(const Surface& surface, const dvec3& n, const dvec3& v, const dvec3& l);
+
+/// The classic models of shaders/forward/classic_lighting.glsl for one light of unit
+/// illuminance, NoL included: kd NoL / π + ks (R·V)^n / π (Phong 1975), (N·H)^n with `blinn`
+/// (Blinn 1977); zero when NoL <= 0.
+dvec3 evaluateClassic(const dvec3& kd, const dvec3& ks, double shininess, bool blinn, const dvec3& n, const dvec3& v,
+                      const dvec3& l);
+/// The exponent the classic models take from perceptual roughness when a material gives none.
+double classicShininess(double perceptualRoughness);
 
 /// KHR_lights_punctual falloffs.
 double rangeAttenuation(double range, double distance);

@@ -42,7 +42,8 @@ void FxaaPass::apply(gl::State& state, const gl::Texture& input, const gl::Frame
     r.ensureProgram();
     state.bindFramebuffer(&target);
     state.viewport(0, 0, input.width(), input.height());
-    state.apply({.noDepthTest = true, .noDepthWrite = true, .framebufferSrgb = true});
+    // The values are encoded already: stored as they are.
+    state.apply({.noDepthTest = true, .noDepthWrite = true});
     state.useProgram(r.program);
     r.program.set(r.texel, glm::vec2(1.0f / float(input.width()), 1.0f / float(input.height())));
     state.bindTexture(SPECULA_UNIT_POST_INPUT, input);

@@ -18,8 +18,8 @@ public:
     FxaaPass(const FxaaPass&) = delete;
     FxaaPass& operator=(const FxaaPass&) = delete;
 
-    /// Anti-aliases `input` (an sRGB texture, the tone-mapped frame) into `target` (sRGB) at
-    /// the same size.
+    /// Anti-aliases `input` (the tone-mapped frame, sRGB-encoded values in an RGBA8 UNORM
+    /// texture) into `target` (an sRGB texture, written without encoding again) at the same size.
     void apply(gl::State& state, const gl::Texture& input, const gl::Framebuffer& target);
     void prepare();
 

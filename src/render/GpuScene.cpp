@@ -6,6 +6,7 @@
 
 #include "core/Log.h"
 #include "gl/State.h"
+#include "render/ShadingVariant.h"
 #include "shaders/shared/Bindings.h"
 #include "shaders/shared/MaterialData.h"
 
@@ -90,10 +91,14 @@ GpuScene::GpuScene(const scene::Scene& scene)
     for (const scene::Material& m : materials) {
         shared::GpuMaterial gpu{};
         gpu.baseColorFactor = m.baseColorFactor;
-        gpu.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
+        gpu.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, float(m.sectorLight) / 255.0f);
         gpu.params = glm::vec4(m.metallicFactor, m.roughnessFactor, m.normalScale, m.occlusionStrength);
         gpu.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
         gpu.specular = glm::vec4(m.specularColorFactor, m.specularFactor);
+        // KHR_materials_ior: the shader's dielectric F0 is 0.04 x specular.rgb (x factor).
+        if (m.ior) gpu.specular = glm::vec4(m.specularColorFactor * (scene::f0FromIor(*m.ior) / 0.04f), m.specularFactor);
+        // Classic models' specular colour: mid grey, a plastic highlight (Phong 1975's ks).
+        gpu.phong = glm::vec4(glm::vec3(0.5f), m.shininess);
         for (int slot = 0; slot < 5; ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
 
         MaterialBinding binding;
@@ -123,8 +128,10 @@ GpuScene::GpuScene(const scene::Scene& scene)
         if (m.doubleSided) gpu.flags.x |= SPECULA_MATERIAL_DOUBLE_SIDED;
         if (m.alphaMode == scene::AlphaMode::Mask) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_MASK;
         if (m.alphaMode == scene::AlphaMode::Blend) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_BLEND;
-        binding.features = gpu.flags.x;
+        // The shading model and BRDF terms select the variant too (not read by the shaders).
+        binding.features = gpu.flags.x | packShading(m.shading);
         gpuMaterials.push_back(gpu);
+        mRecordMaterial.push_back(int(mMaterials.size()));
         mMaterials.push_back(binding);
     }
     const int defaultMaterial = int(materials.size() - 1);
@@ -166,7 +173,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
             copy.flags.x |= SPECULA_MATERIAL_USE_VERTEX_COLOR;
             gpuMaterials.push_back(copy);
             mMaterials.push_back(mMaterials[size_t(gpu.material)]);
-            mMaterials.back().features = copy.flags.x;
+            mMaterials.back().features = copy.flags.x | (mMaterials[size_t(gpu.material)].features & kShadingFeatureMask);
+            mRecordMaterial.push_back(mRecordMaterial[size_t(gpu.material)]);
             gpu.material = int(gpuMaterials.size() - 1);
         }
     }
@@ -177,6 +185,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
     for (size_t i = 0; i < gpuMaterials.size(); ++i)
         std::memcpy(records.data() + i * mMaterialStride, &gpuMaterials[i], sizeof(shared::GpuMaterial));
     mMaterialBuffer = gl::Buffer(records.size(), records.data(), "materials");
+    mRecords = std::move(gpuMaterials);
+    mMaterialCount = int(materials.size());
 
     for (const scene::MeshInstance& instance : scene.meshInstances()) {
         for (int primitive : meshPrimitives[size_t(instance.mesh)]) {
@@ -192,6 +202,24 @@ GpuScene::GpuScene(const scene::Scene& scene)
     }
     log::debug("GPU scene: {} primitives, {} draws, {} materials, {} triangles", mPrimitives.size(), mDraws.size(),
                mMaterials.size(), mTriangles);
+}
+
+void GpuScene::setShading(int material, const scene::MaterialShading& shading)
+{
+    for (size_t record = 0; record < mMaterials.size(); ++record) {
+        if (mRecordMaterial[record] != material) continue;
+        uint32_t& features = mMaterials[record].features;
+        features = (features & ~kShadingFeatureMask) | packShading(shading);
+    }
+}
+
+void GpuScene::writeMaterial(int material, size_t offset, size_t size, const void* data)
+{
+    for (size_t record = 0; record < mRecords.size(); ++record) {
+        if (mRecordMaterial[record] != material) continue;
+        std::memcpy(reinterpret_cast<std::byte*>(&mRecords[record]) + offset, data, size);
+        mMaterialBuffer.update(materialOffset(int(record)) + offset, size, data);
+    }
 }
 
 } // namespace specula::render

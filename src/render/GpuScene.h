@@ -7,6 +7,7 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "scene/Scene.h"
+#include "shaders/shared/MaterialData.h"
 
 namespace specula::render {
 
@@ -48,6 +49,17 @@ public:
     /// Byte offset of material `index`'s record (records are aligned for uniform block ranges).
     size_t materialOffset(int index) const { return size_t(index) * mMaterialStride; }
     size_t triangleCount() const { return mTriangles; }
+
+    /// Scene materials plus the default one (last); records beyond them are per-primitive
+    /// copies (vertex colours) that follow their material.
+    int materialCount() const { return mMaterialCount; }
+    /// Material `material`'s record as uploaded (its first record).
+    const shared::GpuMaterial& record(int material) const { return mRecords[size_t(material)]; }
+    /// Replaces the shading bits of `material`'s (and its copies') variant key.
+    void setShading(int material, const scene::MaterialShading& shading);
+    /// Writes `size` bytes at `offset` within `material`'s record (and its copies'), in the
+    /// CPU copy and in the buffer: no other byte of the buffer is written.
+    void writeMaterial(int material, size_t offset, size_t size, const void* data);
     size_t textureBytes() const { return mTextureBytes; }
 
 private:
@@ -59,6 +71,9 @@ private:
     std::vector<DrawItem> mDraws;
     gl::Buffer mMaterialBuffer;
     size_t mMaterialStride = 0;
+    std::vector<shared::GpuMaterial> mRecords; ///< what the buffer holds, record by record
+    std::vector<int> mRecordMaterial;          ///< the scene material each record belongs to
+    int mMaterialCount = 0;
     // One texture per (image, colour space); images used as both get two.
     std::vector<std::array<gl::Texture, 2>> mTextures;
     std::vector<gl::Sampler> mSamplers;

@@ -10,6 +10,9 @@ std::optional<DebugView> parseDebugView(std::string_view name)
     if (name == "none") return DebugView::None;
     if (name == "ssao") return DebugView::Ssao;
     if (name == "bloom") return DebugView::Bloom;
+    for (DebugView view : {DebugView::BaseColor, DebugView::Normal, DebugView::Roughness, DebugView::Metallic, DebugView::Occlusion,
+                           DebugView::Emissive, DebugView::BrdfD, DebugView::BrdfG, DebugView::BrdfF})
+        if (name == debugViewName(view)) return view;
     return std::nullopt;
 }
 
@@ -19,6 +22,15 @@ const char* debugViewName(DebugView view)
     case DebugView::None: return "none";
     case DebugView::Ssao: return "ssao";
     case DebugView::Bloom: return "bloom";
+    case DebugView::BaseColor: return "base-color";
+    case DebugView::Normal: return "normal";
+    case DebugView::Roughness: return "roughness";
+    case DebugView::Metallic: return "metallic";
+    case DebugView::Occlusion: return "occlusion";
+    case DebugView::Emissive: return "emissive";
+    case DebugView::BrdfD: return "brdf-d";
+    case DebugView::BrdfG: return "brdf-g";
+    case DebugView::BrdfF: return "brdf-f";
     }
     return "none";
 }

@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <map>
 
+#include <epoxy/gl.h>
+
 #include "core/Log.h"
+#include "core/Timer.h"
 #include "gl/Debug.h"
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
@@ -21,6 +25,7 @@
 #include "render/GpuScene.h"
 #include "render/ImageBasedLighting.h"
 #include "render/LightBuffer.h"
+#include "render/ShadingVariant.h"
 #include "render/SsaoPass.h"
 #include "shaders/shared/Bindings.h"
 #include "shaders/shared/EnvironmentData.h"
@@ -31,9 +36,7 @@ namespace specula::render {
 
 std::optional<BrdfGeometry> parseBrdfGeometry(std::string_view name)
 {
-    if (name == "smith-ggx") return BrdfGeometry::SmithGGX;
-    if (name == "schlick-ggx") return BrdfGeometry::SchlickGGX;
-    return std::nullopt;
+    return scene::parseBrdfGeometryName(name);
 }
 
 namespace {
@@ -58,12 +61,43 @@ struct ForwardProgram {
     int normalMatrix = -1;
 };
 
+/// The forward pass's define for a material or BRDF debug view (shaders/forward/debug_views.glsl).
+const char* debugViewDefine(DebugView view)
+{
+    switch (view) {
+    case DebugView::BaseColor: return "DEBUG_VIEW_BASE_COLOR";
+    case DebugView::Normal: return "DEBUG_VIEW_NORMAL";
+    case DebugView::Roughness: return "DEBUG_VIEW_ROUGHNESS";
+    case DebugView::Metallic: return "DEBUG_VIEW_METALLIC";
+    case DebugView::Occlusion: return "DEBUG_VIEW_OCCLUSION";
+    case DebugView::Emissive: return "DEBUG_VIEW_EMISSIVE";
+    case DebugView::BrdfD: return "DEBUG_VIEW_BRDF_D";
+    case DebugView::BrdfG: return "DEBUG_VIEW_BRDF_G";
+    case DebugView::BrdfF: return "DEBUG_VIEW_BRDF_F";
+    default: return nullptr;
+    }
+}
+
 /// What a frame actually runs: a debug view needs its pass on.
 FrameSettings effectiveSettings(const FrameSettings& requested)
 {
     FrameSettings s = requested;
     if (s.debugView == DebugView::Ssao) s.ssao.enabled = true;
     if (s.debugView == DebugView::Bloom) s.bloom.enabled = true;
+    const bool doom = s.materialOverride.model == scene::ShadingModel::Doom;
+    // The Doom model's frame holds only palette colours: one sample a pixel (a resolve would
+    // blend them) and, as for the views below, nothing that scales or curves values.
+    if (doom) s.msaa = 1;
+    if (debugViewDefine(s.debugView) || doom) {
+        // Material and BRDF views show values, not light: nothing may scale or curve them.
+        s.exposureEv = 0.0f;
+        s.ev100.reset();
+        s.tonemap = Tonemap::None;
+        s.bloom.enabled = false;
+        s.autoExposure.enabled = false;
+        s.fxaa.enabled = false;
+        s.environment.skybox = false; // black where no surface is: the sky is no material
+    }
     return s;
 }
 
@@ -77,7 +111,7 @@ struct Renderer::Impl {
     BillboardPass billboards;
 
     std::map<std::string, ForwardProgram> forwardPrograms;
-    std::map<int, gl::Program> tonemapPrograms; ///< by 2 × MSAA sample count (1 = no resolve) + auto exposure
+    std::map<int, gl::Program> tonemapPrograms; ///< by MSAA sample count (1 = no resolve), auto exposure, encoding
     ImageBasedLighting ibl;
     gl::UniformBuffer<shared::EnvironmentData> environment{"environment"};
     gl::Program skyboxProgram;
@@ -96,16 +130,22 @@ struct Renderer::Impl {
     std::unique_ptr<BloomPass> bloom;
     std::unique_ptr<ExposurePass> autoExposure;
     std::unique_ptr<FxaaPass> fxaa;
-    gl::Texture fxaaInput; ///< the tone-mapped frame FXAA reads (sRGB, made when FXAA is on)
+    gl::Texture fxaaInput; ///< the tone-mapped, sRGB-encoded frame FXAA reads (made when FXAA is on)
     gl::Framebuffer fxaaFramebuffer;
     gl::Program debugProgram;
     bool lastAutoExposure = false;
     DebugView lastDebugView = DebugView::None;
 
     bool timing = false;
+    bool wallClock = false;
     bool hdrResolved = false; ///< hdrColor holds the last frame (MSAA resolves lazily)
     std::map<std::string, gl::TimerQuery> timers; ///< one per pass name, reused every frame
-    std::vector<std::pair<const char*, gl::TimerQuery*>> timed; ///< this frame's, in order
+    struct Timed {
+        const char* name;
+        gl::TimerQuery* timer;
+        double wallMs;
+    };
+    std::vector<Timed> timed; ///< this frame's, in order
     FrameStats stats;
 
     /// One pass of the frame: a debug group and, when timing, a timer query.
@@ -114,14 +154,20 @@ struct Renderer::Impl {
     {
         gl::DebugGroup group(name);
         gl::TimerQuery* timer = nullptr;
+        Stopwatch wall;
         if (timing) {
+            if (wallClock) {
+                gl::finish();
+                wall.reset();
+            }
             timer = &timers[name];
             timer->begin();
         }
         body();
         if (timer) {
             timer->end();
-            timed.emplace_back(name, timer);
+            if (wallClock) gl::finish();
+            timed.push_back({name, timer, wallClock ? wall.elapsedMs() : 0.0});
         }
     }
 
@@ -145,7 +191,8 @@ struct Renderer::Impl {
     ForwardProgram& forwardProgram(const FrameSettings& settings, uint32_t features)
     {
         std::vector<std::string> defines;
-        if (settings.brdfGeometry == BrdfGeometry::SchlickGGX) defines.push_back("BRDF_G_SCHLICK_GGX");
+        appendShadingDefines(resolveShading(settings.materialOverride, settings.brdfGeometry, features), defines);
+        if (const char* debug = debugViewDefine(settings.debugView)) defines.push_back(debug);
         if (iblOn(settings)) defines.push_back("IBL");
         if (settings.energyCompensation) defines.push_back("ENERGY_COMPENSATION");
         if (settings.ssao.enabled) defines.push_back("SSAO");
@@ -174,13 +221,14 @@ struct Renderer::Impl {
         return forwardPrograms.emplace(key, std::move(p)).first->second;
     }
 
-    gl::Program& tonemap(int samples, bool automaticExposure)
+    gl::Program& tonemap(int samples, bool automaticExposure, bool encodeSrgb)
     {
-        gl::Program& program = tonemapPrograms[2 * samples + (automaticExposure ? 1 : 0)];
+        gl::Program& program = tonemapPrograms[4 * samples + (automaticExposure ? 1 : 0) + (encodeSrgb ? 2 : 0)];
         if (!program) {
             std::vector<std::string> defines;
             if (samples > 1) defines.push_back("MSAA_SAMPLES " + std::to_string(samples));
             if (automaticExposure) defines.push_back("AUTO_EXPOSURE");
+            if (encodeSrgb) defines.push_back("ENCODE_SRGB");
             program = gl::Program({.vertex = "post/fullscreen.vert", .fragment = "post/tonemap.frag", .defines = defines,
                                    .label = "tonemap"});
         }
@@ -247,7 +295,9 @@ struct Renderer::Impl {
     void bindEnvironment(const FrameSettings& settings)
     {
         if (settings.energyCompensation || iblOn(settings)) {
-            state.bindTexture(SPECULA_UNIT_DFG, ibl.dfg(settings.brdfGeometry == BrdfGeometry::SchlickGGX));
+            // One table a frame: smith-ggx's for every G but schlick-ggx (docs/ibl.md).
+            const BrdfGeometry g = settings.materialOverride.geometry.value_or(settings.brdfGeometry);
+            state.bindTexture(SPECULA_UNIT_DFG, ibl.dfg(g == BrdfGeometry::SchlickGGX));
             state.bindSampler(SPECULA_UNIT_DFG, nullptr);
         }
         if (ibl.hasEnvironment()) {
@@ -390,7 +440,7 @@ void Renderer::prepare(const FrameSettings& requested)
         for (const MaterialBinding& m : r.scene->materials()) r.forwardProgram(settings, m.features);
     const int samples = std::clamp(settings.msaa, 1, 16);
     const bool hdrPasses = settings.bloom.enabled || settings.autoExposure.enabled;
-    r.tonemap(hdrPasses ? 1 : samples, settings.autoExposure.enabled);
+    r.tonemap(hdrPasses ? 1 : samples, settings.autoExposure.enabled, settings.fxaa.enabled);
     r.billboards.prepare();
     if (settings.ssao.enabled) {
         if (!r.ssao) r.ssao = std::make_unique<SsaoPass>();
@@ -413,6 +463,11 @@ void Renderer::prepare(const FrameSettings& requested)
 void Renderer::setGpuTiming(bool enabled)
 {
     mImpl->timing = enabled;
+}
+
+void Renderer::setPassWallClock(bool enabled)
+{
+    mImpl->wallClock = enabled;
 }
 
 const FrameStats& Renderer::stats() const
@@ -457,6 +512,7 @@ void Renderer::render(const View& view, const FrameSettings& requested)
         r.frame.bind(SPECULA_BINDING_FRAME);
         r.pass("ssao prepass", [&] { r.ssao->drawDepthNormals(r.state, r.scene.get(), view, r.width, r.height); });
         r.pass("ssao", [&] { r.ssao->computeOcclusion(r.state, view, settings.ssao); });
+        r.pass("ssao blur", [&] { r.ssao->blur(r.state); });
         r.state.bindTexture(SPECULA_UNIT_SSAO, r.ssao->occlusion());
         r.state.bindSampler(SPECULA_UNIT_SSAO, nullptr);
     }
@@ -497,7 +553,7 @@ void Renderer::render(const View& view, const FrameSettings& requested)
         gl::TextureDesc desc;
         desc.width = r.width;
         desc.height = r.height;
-        desc.format = gl::Format::SRGB8_ALPHA8;
+        desc.format = gl::Format::RGBA8;
         desc.label = "fxaa input";
         r.fxaaInput = gl::Texture(desc);
         r.fxaaFramebuffer = gl::Framebuffer("fxaa input");
@@ -507,8 +563,9 @@ void Renderer::render(const View& view, const FrameSettings& requested)
     r.pass(fused ? "resolve+tonemap" : "tonemap", [&] {
         r.state.bindFramebuffer(settings.fxaa.enabled ? &r.fxaaFramebuffer : &r.ldrFramebuffer);
         r.state.viewport(0, 0, r.width, r.height);
-        r.state.apply({.noDepthTest = true, .noDepthWrite = true, .framebufferSrgb = true});
-        r.state.useProgram(r.tonemap(fused ? samples : 1, settings.autoExposure.enabled));
+        // Into FXAA's UNORM input the shader encodes; into the sRGB target GL does.
+        r.state.apply({.noDepthTest = true, .noDepthWrite = true, .framebufferSrgb = !settings.fxaa.enabled});
+        r.state.useProgram(r.tonemap(fused ? samples : 1, settings.autoExposure.enabled, settings.fxaa.enabled));
         r.frame.bind(SPECULA_BINDING_FRAME);
         if (settings.autoExposure.enabled) r.autoExposure->bind();
         r.state.bindTexture(SPECULA_UNIT_POST_INPUT, fused ? r.msaaColor : r.hdrColor);
@@ -536,7 +593,7 @@ void Renderer::render(const View& view, const FrameSettings& requested)
         });
     }
     r.stats.drawCalls = r.state.drawCalls();
-    for (const auto& [name, timer] : r.timed) r.stats.passes.push_back({name, timer->elapsedMs()});
+    for (const Impl::Timed& t : r.timed) r.stats.passes.push_back({t.name, t.timer->elapsedMs(), t.wallMs});
 }
 
 ImageRGBA8 Renderer::readImage() const
@@ -552,6 +609,18 @@ ImageRGBA8 Renderer::readImage() const
     for (int y = 0; y < r.height; ++y)
         std::copy_n(pixels.begin() + ptrdiff_t(size_t(r.height - 1 - y) * row), row, image.pixels.begin() + ptrdiff_t(size_t(y) * row));
     return image;
+}
+
+void Renderer::present(int width, int height)
+{
+    Impl& r = *mImpl;
+    // No sRGB encoding and no scissor: the bytes are sRGB already and copied as they are.
+    // The default framebuffer stays bound for what the window draws on top (a UI).
+    r.state.bindFramebuffer(nullptr);
+    r.state.viewport(0, 0, width, height);
+    r.state.apply({.noDepthTest = true, .noDepthWrite = true});
+    glBlitNamedFramebuffer(r.ldrFramebuffer.id(), 0, 0, 0, r.width, r.height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                           GL_LINEAR);
 }
 
 float Renderer::exposureScale() const
@@ -595,6 +664,79 @@ ImageFloat Renderer::readRadiance() const
         }
     }
     return image;
+}
+
+int Renderer::materialCount() const
+{
+    return mImpl->scene ? mImpl->scene->materialCount() : 0;
+}
+
+scene::MaterialShading Renderer::materialShading(int material) const
+{
+    if (material < 0 || material >= materialCount()) return {};
+    return unpackShading(mImpl->scene->materials()[size_t(material)].features);
+}
+
+std::array<uint32_t, 5> Renderer::materialTextureNames(int material) const
+{
+    static_assert(size_t(TextureSlot::Count) == 5);
+    std::array<uint32_t, 5> names{};
+    if (material < 0 || material >= materialCount()) return names;
+    const MaterialBinding& binding = mImpl->scene->materials()[size_t(material)];
+    for (size_t i = 0; i < names.size(); ++i) names[i] = binding.textures[i] ? binding.textures[i]->id() : 0u;
+    return names;
+}
+
+void Renderer::setMaterialShading(int material, const scene::MaterialShading& shading)
+{
+    if (material < 0 || material >= materialCount()) return;
+    mImpl->scene->setShading(material, shading);
+}
+
+glm::vec4 Renderer::materialParameter(int material, MaterialParameter parameter) const
+{
+    if (material < 0 || material >= materialCount()) return glm::vec4(0.0f);
+    const shared::GpuMaterial& r = mImpl->scene->record(material);
+    switch (parameter) {
+    case MaterialParameter::BaseColor: return r.baseColorFactor;
+    case MaterialParameter::Emissive: return glm::vec4(glm::vec3(r.emissive), 0.0f);
+    case MaterialParameter::Metallic: return glm::vec4(r.params.x, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::Roughness: return glm::vec4(r.params.y, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::PhongSpecular: return glm::vec4(glm::vec3(r.phong), 0.0f);
+    case MaterialParameter::Shininess: return glm::vec4(r.phong.w, 0.0f, 0.0f, 0.0f);
+    }
+    return glm::vec4(0.0f);
+}
+
+void Renderer::setMaterialParameter(int material, MaterialParameter parameter, const glm::vec4& value)
+{
+    if (material < 0 || material >= materialCount()) return;
+    GpuScene& gpu = *mImpl->scene;
+    using shared::GpuMaterial;
+    // Each parameter is a run of floats inside one vec4 of the record.
+    auto write = [&](size_t vectorOffset, int first, int count) {
+        gpu.writeMaterial(material, vectorOffset + size_t(first) * sizeof(float), size_t(count) * sizeof(float), &value[first]);
+    };
+    switch (parameter) {
+    case MaterialParameter::BaseColor: write(offsetof(GpuMaterial, baseColorFactor), 0, 4); break;
+    case MaterialParameter::Emissive: write(offsetof(GpuMaterial, emissive), 0, 3); break;
+    case MaterialParameter::Metallic: {
+        const glm::vec4 v(value.x);
+        gpu.writeMaterial(material, offsetof(GpuMaterial, params), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::Roughness: {
+        const glm::vec4 v(value.x);
+        gpu.writeMaterial(material, offsetof(GpuMaterial, params) + sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::PhongSpecular: write(offsetof(GpuMaterial, phong), 0, 3); break;
+    case MaterialParameter::Shininess: {
+        const glm::vec4 v(value.x);
+        gpu.writeMaterial(material, offsetof(GpuMaterial, phong) + 3 * sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    }
 }
 
 } // namespace specula::render

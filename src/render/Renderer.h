@@ -1,5 +1,7 @@
 #pragma once
 // The forward renderer: a scene in, an HDR frame and a tone-mapped image out.
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -22,8 +24,20 @@ namespace specula::render {
 
 class LightBuffer;
 
-enum class BrdfGeometry { SmithGGX, SchlickGGX };
+/// Masking-shadowing term of the BRDF (scene/MaterialModel.h lists every choice).
+using BrdfGeometry = scene::BrdfGeometry;
+/// smith-ggx, smith-ggx-correlated, schlick-ggx, neumann, kelemen, cook-torrance, implicit.
 std::optional<BrdfGeometry> parseBrdfGeometry(std::string_view name);
+
+/// A parameter of a material's record that can change at run time (Renderer::setMaterialParameter).
+enum class MaterialParameter {
+    BaseColor,     ///< rgba base colour factor
+    Emissive,      ///< rgb emissive radiance (factor × strength)
+    Metallic,      ///< x
+    Roughness,     ///< x, perceptual
+    PhongSpecular, ///< rgb specular colour ks of the classic models
+    Shininess,     ///< x, Phong exponent (0 = from roughness)
+};
 
 /// How the environment lights and shows in a frame (its content is set with setEnvironment).
 struct EnvironmentView {
@@ -42,7 +56,12 @@ struct FrameSettings {
     float exposureEv = 0.0f;               ///< image multiplied by 2^exposureEv
     Tonemap tonemap = Tonemap::Neutral;
     float reinhardWhite = 4.0f;            ///< white point of reinhard-ext (cd/m² after exposure)
+    /// G of materials that choose none. The IBL's DFG table exists for smith-ggx and
+    /// schlick-ggx; the other terms use smith-ggx's (see docs/ibl.md).
     BrdfGeometry brdfGeometry = BrdfGeometry::SmithGGX;
+    /// Overrides every material's shading model and BRDF terms for the frame (--shading,
+    /// --brdf-d/g/f/diffuse); an unset field leaves each material's own choice.
+    scene::MaterialShading materialOverride;
     glm::vec3 background{0.0f};            ///< radiance behind the scene, cd/m²
     glm::vec3 ambient{0.0f};               ///< constant ambient radiance for the diffuse lobe
     bool gizmos = false;                   ///< draw every light as a disc in its colour (BillboardPass)
@@ -63,11 +82,16 @@ struct FrameSettings {
 };
 
 /// GPU milliseconds per pass of the last frame (timer queries), when timing is on. Passes
-/// in frame order: "ssao prepass", "ssao", "forward", "resolve", "bloom", "exposure",
+/// in frame order: "ssao prepass", "ssao", "ssao blur", "forward", "resolve", "bloom", "exposure",
 /// "tonemap" or "resolve+tonemap", "fxaa", "debug view"; only those that ran.
 struct PassTiming {
     const char* name;
     double gpuMs;
+    /// With setPassWallClock: milliseconds from before the pass was issued until the GPU
+    /// finished it (glFinish on both sides), else 0. On a software renderer this is the pass's
+    /// true cost: llvmpipe's timer queries miss compute dispatches that need no flush of
+    /// earlier rendering (its auto-exposure pass reads 0.2 ms by query, 15 ms by wall clock).
+    double wallMs = 0.0;
 };
 
 struct FrameStats {
@@ -101,6 +125,9 @@ public:
     /// The last frame, tone-mapped and sRGB-encoded, top row first (with a debug view: that
     /// buffer).
     ImageRGBA8 readImage() const;
+    /// Copies the last frame (what readImage() returns) into the default framebuffer's
+    /// rectangle (0, 0, width, height), scaled, for windows.
+    void present(int width, int height);
     /// The last frame's linear radiance × exposureScale() (before tone mapping, after bloom),
     /// top row first. With the SSAO debug view: the occlusion in r, g and b.
     ImageFloat readRadiance() const;
@@ -110,11 +137,30 @@ public:
 
     /// Measure each pass with GPU timer queries (waits for the GPU at the end of a frame).
     void setGpuTiming(bool enabled);
+    /// With GPU timing on, also time each pass by wall clock, waiting for the GPU before and
+    /// after it (PassTiming::wallMs). Serialises the frame: for measurements only.
+    void setPassWallClock(bool enabled);
     const FrameStats& stats() const;
     gl::State& state();
 
     /// Compiles the programs `settings` needs now rather than on first use.
     void prepare(const FrameSettings& settings);
+
+    // The material registry: the scene's materials by index, the glTF default material last.
+    // Changes apply from the next frame without reloading the scene; programs are compiled on
+    // first use and cached for the run.
+    int materialCount() const;
+    scene::MaterialShading materialShading(int material) const;
+    /// Changes one material's shading model and BRDF terms (its shader variant only).
+    void setMaterialShading(int material, const scene::MaterialShading& shading);
+    /// Rewrites one parameter in one material's record of the material buffer: that field's
+    /// bytes and no others (unused components of `value` are ignored).
+    void setMaterialParameter(int material, MaterialParameter parameter, const glm::vec4& value);
+    /// The parameter's current value (as the buffer holds it; unused components 0).
+    glm::vec4 materialParameter(int material, MaterialParameter parameter) const;
+    /// GL texture names of a material's base colour, metallic-roughness, normal, occlusion and
+    /// emissive textures (0 where it has none), for UI thumbnails (ImGui::Image).
+    std::array<uint32_t, 5> materialTextureNames(int material) const;
 
 private:
     struct Impl;

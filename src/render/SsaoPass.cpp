@@ -5,7 +5,6 @@
 #include <map>
 #include <string>
 
-#include "gl/Debug.h"
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/State.h"
@@ -141,8 +140,8 @@ struct SsaoPass::Impl {
         desc.format = gl::Format::Depth32F;
         desc.label = "ssao depth";
         depth = gl::Texture(desc);
-        desc.format = gl::Format::RGBA16F;
-        desc.label = "ssao view normal";
+        desc.format = gl::Format::RGBA32F;
+        desc.label = "ssao view normal and z";
         normal = gl::Texture(desc);
         desc.format = gl::Format::R16F;
         desc.label = "ssao raw";
@@ -177,8 +176,8 @@ void SsaoPass::drawDepthNormals(gl::State& state, const GpuScene* gpuScene, cons
     state.bindFramebuffer(&r.framebuffer);
     state.viewport(0, 0, width, height);
     state.apply({}); // depth writes on, so that the clear reaches the depth buffer
-    // The normal of "nothing" faces the camera; the depth 1 is what the SSAO passes test.
-    r.framebuffer.clearColor(0, 0.0f, 0.0f, 1.0f, 0.0f);
+    // Where nothing is drawn the view z is positive (behind the eye): what the SSAO passes test.
+    r.framebuffer.clearColor(0, 0.0f, 0.0f, 1.0f, 1.0f);
     r.framebuffer.clearDepth(1.0f);
     if (!gpuScene) return;
     const GpuScene& scene = *gpuScene;
@@ -227,28 +226,35 @@ void SsaoPass::computeOcclusion(gl::State& state, const View& view, const SsaoSe
         r.kernelCount = samples;
     }
     d.projection = view.projection;
-    d.inverseProjection = glm::inverse(view.projection);
     d.params = glm::vec4(std::max(settings.radius, 1e-4f), std::max(settings.bias, 0.0f), std::max(settings.power, 0.0f),
                          float(samples));
     d.size = glm::vec4(float(r.width), float(r.height), 1.0f / float(r.width), 1.0f / float(r.height));
+    // A perspective projection has w = -z (row 3 = 0 0 -1 0); an orthographic one w = 1.
+    d.options = glm::vec4(view.projection[3][3] == 1.0f ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
     r.data.upload();
     r.data.bind(SPECULA_BINDING_SSAO);
     // The pre-pass rendered into the depth and normal textures we now sample.
     state.memoryBarrier(gl::Barrier::TextureFetch);
 
     // texelFetch only: samplers do not matter, but a stale sampler object must not either.
-    state.bindTexture(SPECULA_UNIT_POST_INPUT, r.depth);
+    state.bindTexture(SPECULA_UNIT_POST_INPUT, r.normal);
     state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
-    state.bindTexture(SPECULA_UNIT_POST_INPUT_1, r.normal);
-    state.bindSampler(SPECULA_UNIT_POST_INPUT_1, nullptr);
     state.bindTexture(SPECULA_UNIT_POST_INPUT_2, r.noise);
     state.bindSampler(SPECULA_UNIT_POST_INPUT_2, nullptr);
     state.useProgram(r.ssaoProgram);
     state.bindImage(SPECULA_IMAGE_POST_OUTPUT, r.raw, 0, gl::ImageAccess::WriteOnly);
     state.dispatchCompute(groups(r.width), groups(r.height));
     state.memoryBarrier(gl::Barrier::TextureFetch);
+}
 
+void SsaoPass::blur(gl::State& state)
+{
+    Impl& r = *mImpl;
+    r.data.bind(SPECULA_BINDING_SSAO);
+    state.bindTexture(SPECULA_UNIT_POST_INPUT, r.normal);
+    state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
     state.bindTexture(SPECULA_UNIT_POST_INPUT_2, r.raw);
+    state.bindSampler(SPECULA_UNIT_POST_INPUT_2, nullptr);
     state.useProgram(r.blurProgram);
     state.bindImage(SPECULA_IMAGE_POST_OUTPUT, r.blurred, 0, gl::ImageAccess::WriteOnly);
     state.dispatchCompute(groups(r.width), groups(r.height));

@@ -32,9 +32,11 @@ public:
     /// uniform block (view, viewProjection) bound. Blended surfaces do not occlude; no scene
     /// leaves nothing to occlude.
     void drawDepthNormals(gl::State& state, const GpuScene* scene, const View& view, int width, int height);
-    /// Occlusion of the last pre-pass and its blur; then occlusion() holds the result.
+    /// Occlusion of the last pre-pass (noisy: one kernel rotation per pixel).
     void computeOcclusion(gl::State& state, const View& view, const SsaoSettings& settings);
-    /// R16F, width × height: 1 = unoccluded. Valid after computeOcclusion().
+    /// The depth-aware blur of computeOcclusion()'s result; then occlusion() holds it.
+    void blur(gl::State& state);
+    /// R16F, width × height: 1 = unoccluded. Valid after blur().
     const gl::Texture& occlusion() const;
 
     /// Compiles the programs `scene` needs now rather than on first use.

@@ -31,6 +31,7 @@ namespace fs = std::filesystem;
 constexpr std::string_view kSupportedRequiredExtensions[] = {
     "KHR_lights_punctual",
     "KHR_materials_emissive_strength",
+    "KHR_materials_ior",      // F0 of the dielectric part (Material::ior)
     "KHR_materials_specular", // factors; its textures are ignored
     "KHR_mesh_quantization", // integer attributes: the accessor reader handles every component type
     "KHR_texture_transform",
@@ -596,6 +597,12 @@ private:
                     color && color->IsArray() && color->ArrayLen() == 3)
                     for (int c = 0; c < 3; ++c)
                         if (color->Get(c).IsNumber()) material.specularColorFactor[c] = float(std::max(color->Get(c).GetNumberAsDouble(), 0.0));
+            }
+            // KHR_materials_ior: 1.5 (the default) is F0 = 0.04 exactly; 0 means "no
+            // interface" in the extension (transmission-only), which has no F0 here: left unset.
+            if (const tinygltf::Value* ior = extension(source.extensions, "KHR_materials_ior")) {
+                const double value = number(*ior, "ior").value_or(1.5);
+                if (value >= 1.0 && value != 1.5) material.ior = float(value);
             }
             material.normalScale = float(source.normalTexture.scale);
             material.occlusionStrength = float(source.occlusionTexture.strength);

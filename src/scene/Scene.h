@@ -10,6 +10,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "scene/MaterialModel.h"
+
 namespace specula::scene {
 
 /// 8-bit image, tightly packed, first row at the top (as files store it).
@@ -74,6 +76,15 @@ struct Material {
     TextureRef normalTexture;
     TextureRef occlusionTexture;         ///< R
     TextureRef emissiveTexture;          ///< sRGB
+    /// Shading model and BRDF terms (scene files); unset ones come from the frame.
+    MaterialShading shading;
+    /// Index of refraction of the dielectric part (KHR_materials_ior): F0 = ((ior − 1)/(ior + 1))²
+    /// in place of 0.04 (ior 1.5). Unset: 0.04 exactly.
+    std::optional<float> ior;
+    /// Phong and Blinn-Phong exponent; 0 = from roughness, 2/α² − 2 (Walter et al. 2007, eq. 26).
+    float shininess = 0.0f;
+    /// Doom model: the sector's light level, 0–255 (scene/DoomLighting.h).
+    int sectorLight = 255;
 };
 
 struct Vertex {

@@ -315,6 +315,21 @@ Material parseMaterial(const Object& object, const std::string& name)
     material.alphaMode = alphaMode == "mask" ? AlphaMode::Mask : alphaMode == "blend" ? AlphaMode::Blend : AlphaMode::Opaque;
     object.onlyFor("alphaCutoff", material.alphaMode == AlphaMode::Mask, "alphaMode \"mask\"");
     material.alphaCutoff = object.nonNegative("alphaCutoff").value_or(material.alphaCutoff);
+    // Material system (docs/scene-format.md): shading model, BRDF terms, F0 from an IOR, Phong exponent.
+    if (const auto v = object.choice("shading", {"pbr", "unlit", "flat", "gouraud", "phong", "blinn-phong", "doom"}))
+        material.shading.model = parseShadingModel(*v);
+    if (const auto v = object.choice("brdfD", {"ggx", "beckmann", "blinn-phong"})) material.shading.distribution = parseBrdfDistribution(*v);
+    if (const auto v = object.choice("brdfG", {"smith-ggx", "smith-ggx-correlated", "schlick-ggx", "neumann", "kelemen",
+                                               "cook-torrance", "implicit"}))
+        material.shading.geometry = parseBrdfGeometryName(*v);
+    if (const auto v = object.choice("brdfF", {"schlick", "schlick-sg", "none"})) material.shading.fresnel = parseBrdfFresnel(*v);
+    if (const auto v = object.choice("brdfDiffuse", {"lambert", "oren-nayar", "burley"})) material.shading.diffuse = parseBrdfDiffuse(*v);
+    if (const auto ior = object.number("ior")) {
+        if (!(*ior >= 1.0f)) object.fail("ior", "must be at least 1");
+        material.ior = *ior;
+    }
+    material.shininess = object.nonNegative("shininess").value_or(material.shininess);
+    material.sectorLight = object.integer("sectorLight", 0, 255).value_or(material.sectorLight);
     return material;
 }
 
@@ -346,7 +361,8 @@ void parseShape(const Object& object, Scene& scene, size_t index)
     Material material = defaultShapeMaterial(name);
     if (const auto materialObject = object.object("material", {"name", "baseColor", "metallic", "roughness", "emissive",
                                                                "emissiveStrength", "doubleSided", "alphaMode",
-                                                               "alphaCutoff"}))
+                                                               "alphaCutoff", "shading", "brdfD", "brdfG", "brdfF",
+                                                               "brdfDiffuse", "ior", "shininess", "sectorLight"}))
         material = parseMaterial(*materialObject, name);
     addShape(scene, std::move(primitive), material, parseTransform(object), name);
 }
@@ -602,10 +618,77 @@ RenderSettings parseRender(const Object& object)
     render.msaa = object.integer("msaa", 1, 8);
     if (render.msaa && (*render.msaa & (*render.msaa - 1)) != 0) object.fail("msaa", "must be 1, 2, 4 or 8");
     render.exposure = object.number("exposure");
-    render.tonemap = object.choice("tonemap", {"none", "reinhard", "reinhard-ext", "aces", "neutral"});
-    render.brdfG = object.choice("brdfG", {"smith-ggx", "schlick-ggx"});
+    render.tonemap = object.choice("tonemap", {"none", "reinhard", "reinhard-ext", "aces", "neutral", "agx"});
+    render.brdfG = object.choice("brdfG", {"smith-ggx", "smith-ggx-correlated", "schlick-ggx", "neumann", "kelemen", "cook-torrance", "implicit"});
     render.defaultLights = object.boolean("defaultLights");
+    render.ev100 = object.number("ev100");
     return render;
+}
+
+/// A physical camera's exposure settings: all three or none.
+std::optional<RenderSettings::CameraExposure> parseCameraExposure(const Object& object)
+{
+    const char* keys[] = {"aperture", "shutter", "iso"};
+    const int given = int(std::count_if(std::begin(keys), std::end(keys), [&](const char* key) { return object.has(key); }));
+    if (given == 0) return std::nullopt;
+    if (given != 3) object.fail(fmt::format("{} needs 'aperture', 'shutter' and 'iso' together", object.where()));
+    return RenderSettings::CameraExposure{*object.nonNegative("aperture", true), *object.nonNegative("shutter", true),
+                                          *object.nonNegative("iso", true)};
+}
+
+/// "post": each pass is `true`/`false` or an object of its parameters (enabled unless it says
+/// "enabled": false).
+PostFileSettings parsePost(const Object& object)
+{
+    PostFileSettings post;
+    // `pass` as a boolean, or as an object with `keys` (parsed by `parse`).
+    auto pass = [&](std::string_view key, std::vector<std::string_view> keys, std::optional<bool>& enabled, auto&& parse) {
+        if (!object.has(key)) return;
+        if (object.at(key).is_boolean()) {
+            enabled = object.boolean(key);
+            return;
+        }
+        if (!object.at(key).is_object()) object.fail(key, "must be true, false or an object");
+        keys.push_back("enabled");
+        const Object settings = *object.object(key, std::move(keys));
+        enabled = settings.boolean("enabled").value_or(true);
+        parse(settings);
+    };
+    auto range = [](const Object& o, std::string_view key, float min, float max) {
+        const auto value = o.number(key);
+        if (value && !(*value >= min && *value <= max)) o.fail(key, fmt::format("must be between {} and {}", min, max));
+        return value;
+    };
+    pass("bloom", {"intensity", "levels", "radius", "threshold", "knee", "fireflyFilter"}, post.bloom.enabled, [&](const Object& o) {
+        post.bloom.intensity = o.nonNegative("intensity");
+        post.bloom.levels = o.integer("levels", 1, 8);
+        post.bloom.radius = o.nonNegative("radius", true);
+        post.bloom.threshold = o.nonNegative("threshold");
+        post.bloom.knee = range(o, "knee", 0.0f, 1.0f);
+        post.bloom.fireflyFilter = o.boolean("fireflyFilter");
+    });
+    pass("ssao", {"radius", "bias", "power", "samples"}, post.ssao.enabled, [&](const Object& o) {
+        post.ssao.radius = o.nonNegative("radius", true);
+        post.ssao.bias = o.nonNegative("bias");
+        post.ssao.power = o.nonNegative("power", true);
+        post.ssao.samples = o.integer("samples", 1, 64);
+    });
+    pass("autoExposure", {"minEv100", "maxEv100", "lowPercentile", "highPercentile", "speedUp", "speedDown"},
+         post.autoExposure.enabled, [&](const Object& o) {
+             auto& a = post.autoExposure;
+             a.minEv100 = o.number("minEv100");
+             a.maxEv100 = o.number("maxEv100");
+             if (a.minEv100.value_or(-6.0f) >= a.maxEv100.value_or(18.0f))
+                 o.fail("minEv100", "must be less than maxEv100 (defaults -6 and 18)");
+             a.lowPercentile = o.unitInterval("lowPercentile");
+             a.highPercentile = o.unitInterval("highPercentile");
+             if (a.lowPercentile.value_or(0.1f) >= a.highPercentile.value_or(0.95f))
+                 o.fail("lowPercentile", "must be less than highPercentile (defaults 0.1 and 0.95)");
+             a.speedUp = o.nonNegative("speedUp");
+             a.speedDown = o.nonNegative("speedDown");
+         });
+    pass("fxaa", {}, post.fxaa, [](const Object&) {});
+    return post;
 }
 
 /// nlohmann reports a byte offset; people want "file:line:column".
@@ -681,7 +764,7 @@ SceneDocument loadSceneFile(const fs::path& path)
     if (in.bad()) throw Error("{}: cannot read: {}", path.string(), std::generic_category().message(errno));
 
     const Json json = parseJson(path, text);
-    const Object root(path, json, "", {"models", "shapes", "lights", "billboards", "camera", "environment", "render"});
+    const Object root(path, json, "", {"models", "shapes", "lights", "billboards", "camera", "environment", "render", "post"});
     const fs::path directory = path.parent_path();
 
     SceneDocument document;
@@ -701,13 +784,22 @@ SceneDocument loadSceneFile(const fs::path& path)
                                                         "billboards", "scatter"});
     for (size_t i = 0; i < billboards.size(); ++i) parseBillboardGroup(billboards[i], scene, directory, i);
     if (const auto camera = root.object("camera", {"type", "name", "position", "target", "direction", "up", "yfov",
-                                                   "aspectRatio", "znear", "zfar", "xmag", "ymag"}))
+                                                   "aspectRatio", "znear", "zfar", "xmag", "ymag", "aperture", "shutter",
+                                                   "iso"})) {
         parseCamera(*camera, scene);
+        document.render.cameraExposure = parseCameraExposure(*camera);
+    }
     if (const auto environment = root.object("environment", {"color", "file", "intensity", "rotation"}))
         document.environment = parseEnvironment(*environment, directory);
     if (const auto render = root.object("render", {"width", "height", "msaa", "exposure", "tonemap", "brdfG",
-                                                   "defaultLights"}))
+                                                   "defaultLights", "ev100"})) {
+        const auto cameraExposure = document.render.cameraExposure;
         document.render = parseRender(*render);
+        document.render.cameraExposure = cameraExposure;
+        if (document.render.ev100 && cameraExposure)
+            render->fail("ev100", "and the camera's aperture, shutter and iso both set the exposure; give one");
+    }
+    if (const auto post = root.object("post", {"bloom", "ssao", "autoExposure", "fxaa"})) document.post = parsePost(*post);
     return document;
 }
 

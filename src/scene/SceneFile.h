@@ -15,9 +15,37 @@ struct RenderSettings {
     std::optional<int> height;
     std::optional<int> msaa;
     std::optional<float> exposure;       ///< EV; the image is multiplied by 2^exposure
-    std::optional<std::string> tonemap;  ///< none, reinhard, reinhard-ext, aces, neutral
+    std::optional<std::string> tonemap;  ///< none, reinhard, reinhard-ext, aces, neutral, agx
     std::optional<std::string> brdfG;    ///< smith-ggx (default) or schlick-ggx
     std::optional<bool> defaultLights;   ///< false = never add the default light rig
+    /// Physical camera exposure as EV100 ("render": {"ev100"}), or from the camera's
+    /// aperture (f-number), shutter (seconds) and ISO ("camera": {...}); at most one of them.
+    std::optional<float> ev100;
+    struct CameraExposure {
+        float aperture = 16.0f, shutter = 0.01f, iso = 100.0f;
+    };
+    std::optional<CameraExposure> cameraExposure;
+};
+
+/// Post-processing a scene file asks for ("post"); unset values come from the command line or
+/// the defaults (render/PostSettings.h documents them).
+struct PostFileSettings {
+    struct Bloom {
+        std::optional<bool> enabled;
+        std::optional<float> intensity, radius, threshold, knee;
+        std::optional<int> levels;
+        std::optional<bool> fireflyFilter;
+    } bloom;
+    struct Ssao {
+        std::optional<bool> enabled;
+        std::optional<float> radius, bias, power;
+        std::optional<int> samples;
+    } ssao;
+    struct AutoExposure {
+        std::optional<bool> enabled;
+        std::optional<float> minEv100, maxEv100, lowPercentile, highPercentile, speedUp, speedDown;
+    } autoExposure;
+    std::optional<bool> fxaa;
 };
 
 /// The environment a scene file asks for. Until image-based lighting exists only `color`
@@ -33,6 +61,7 @@ struct SceneDocument {
     Scene scene;
     RenderSettings render;
     EnvironmentSettings environment;
+    PostFileSettings post;
     std::filesystem::path source;
 };
 

@@ -7,6 +7,7 @@
 #include "shaders/shared/FrameData.h"
 #include "shaders/shared/LightData.h"
 #include "shaders/shared/MaterialData.h"
+#include "shaders/shared/PostData.h"
 
 using namespace specula;
 using specula::test::GlTest;
@@ -58,4 +59,21 @@ TEST_F(GlTest, SharedStructsMatchGlslLayout)
     EXPECT_EQ(memberOffset(id, GL_UNIFORM, "material.params"), GLint(offsetof(GpuMaterial, params)));
     EXPECT_EQ(memberOffset(id, GL_UNIFORM, "material.flags"), GLint(offsetof(GpuMaterial, flags)));
     EXPECT_EQ(memberOffset(id, GL_UNIFORM, "material.uvTransform[0]"), GLint(offsetof(GpuMaterial, uvTransform)));
+}
+
+TEST_F(GlTest, PostStructsMatchGlslLayout)
+{
+    using shared::ExposureParams;
+    using shared::SsaoData;
+    const gl::Program ssao({.compute = "post/ssao.comp"});
+    EXPECT_EQ(blockSize(ssao.id(), GL_UNIFORM_BLOCK, "SsaoBlock"), GLint(sizeof(SsaoData)));
+    EXPECT_EQ(memberOffset(ssao.id(), GL_UNIFORM, "ssao.size"), GLint(offsetof(SsaoData, size)));
+    EXPECT_EQ(memberOffset(ssao.id(), GL_UNIFORM, "ssao.params"), GLint(offsetof(SsaoData, params)));
+    EXPECT_EQ(memberOffset(ssao.id(), GL_UNIFORM, "ssao.options"), GLint(offsetof(SsaoData, options)));
+    EXPECT_EQ(memberOffset(ssao.id(), GL_UNIFORM, "ssao.kernel[0]"), GLint(offsetof(SsaoData, kernel)));
+    const gl::Program adapt({.compute = "post/exposure_adapt.comp"});
+    EXPECT_EQ(blockSize(adapt.id(), GL_UNIFORM_BLOCK, "ExposureParamsBlock"), GLint(sizeof(ExposureParams)));
+    EXPECT_EQ(memberOffset(adapt.id(), GL_UNIFORM, "params.adaptation"), GLint(offsetof(ExposureParams, adaptation)));
+    EXPECT_EQ(memberOffset(adapt.id(), GL_UNIFORM, "params.clampEv"), GLint(offsetof(ExposureParams, clampEv)));
+    EXPECT_EQ(blockSize(adapt.id(), GL_SHADER_STORAGE_BLOCK, "ExposureBlock"), GLint(sizeof(shared::ExposureState)));
 }

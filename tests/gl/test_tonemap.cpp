@@ -39,7 +39,7 @@ TEST_F(GlTest, TonemappersMatchCpu)
 {
     const glm::vec3 radiances[] = {{0.02f, 0.18f, 0.5f}, {0.9f, 0.4f, 0.1f}, {3.0f, 1.5f, 0.7f}, {40.0f, 20.0f, 2.0f}};
     const render::Tonemap operators[] = {render::Tonemap::None, render::Tonemap::Reinhard, render::Tonemap::ReinhardExtended,
-                                         render::Tonemap::Aces, render::Tonemap::Neutral};
+                                         render::Tonemap::Aces, render::Tonemap::Neutral, render::Tonemap::Agx};
     render::Renderer renderer;
     const render::View view = render::lookAtView({0, 0, 2}, {0, 0, 0}, {0, 1, 0}, glm::radians(45.0f), 1.0f, 0.1f, 10.0f);
     for (const glm::vec3& radiance : radiances) {

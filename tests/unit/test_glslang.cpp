@@ -35,10 +35,25 @@ std::vector<Variant> variants()
     const std::vector<std::string> features = {"HAS_BASE_COLOR_TEXTURE", "HAS_METALLIC_ROUGHNESS_TEXTURE", "HAS_NORMAL_TEXTURE",
                                                "HAS_OCCLUSION_TEXTURE",  "HAS_EMISSIVE_TEXTURE",           "DOUBLE_SIDED",
                                                "ALPHA_MASK",             "ALPHA_BLEND",                    "VERTEX_COLOR",
-                                               "IBL",                    "ENERGY_COMPENSATION",            "BRDF_G_SCHLICK_GGX"};
+                                               "IBL",                    "ENERGY_COMPENSATION",            "BRDF_G_SCHLICK_GGX",
+                                               "SSAO"};
     for (const auto& feature : features) out.push_back({"forward/pbr.frag", {feature}});
     out.push_back({"forward/pbr.frag", features});
+    // The material system: every BRDF term, shading model and debug view (docs/materials.md).
+    for (const char* define : {"BRDF_D_BECKMANN", "BRDF_D_BLINN_PHONG", "BRDF_G_SMITH_GGX_CORRELATED", "BRDF_G_NEUMANN",
+                               "BRDF_G_KELEMEN", "BRDF_G_COOK_TORRANCE", "BRDF_G_IMPLICIT", "BRDF_F_SCHLICK_SG", "BRDF_F_NONE",
+                               "BRDF_DIFFUSE_OREN_NAYAR", "BRDF_DIFFUSE_BURLEY", "SHADING_UNLIT", "SHADING_FLAT", "SHADING_GOURAUD",
+                               "SHADING_PHONG", "SHADING_BLINN_PHONG", "SHADING_DOOM", "DEBUG_VIEW_BASE_COLOR", "DEBUG_VIEW_NORMAL",
+                               "DEBUG_VIEW_ROUGHNESS", "DEBUG_VIEW_METALLIC", "DEBUG_VIEW_OCCLUSION", "DEBUG_VIEW_EMISSIVE",
+                               "DEBUG_VIEW_BRDF_D", "DEBUG_VIEW_BRDF_G", "DEBUG_VIEW_BRDF_F"})
+        out.push_back({"forward/pbr.frag", {define, "IBL", "HAS_OCCLUSION_TEXTURE"}});
+    out.push_back({"forward/pbr.vert", {"SHADING_GOURAUD"}});
     out.push_back({"post/tonemap.frag", {"MSAA_SAMPLES 4"}});
+    // Post-processing variants (render/BloomPass, SsaoPass, Renderer's tone mapper for FXAA).
+    out.push_back({"post/tonemap.frag", {"MSAA_SAMPLES 4", "AUTO_EXPOSURE", "ENCODE_SRGB"}});
+    out.push_back({"post/bloom_downsample.comp", {"FIRST_LEVEL"}});
+    out.push_back({"post/bloom_downsample.comp", {"FIRST_LEVEL", "KARIS_AVERAGE"}});
+    out.push_back({"forward/prepass.frag", {"ALPHA_MASK", "HAS_BASE_COLOR_TEXTURE", "VERTEX_COLOR"}});
     out.push_back({"ibl/dfg.comp", {"BRDF_G_SCHLICK_GGX"}});
     return out;
 }

@@ -1033,7 +1033,7 @@ TEST(GltfFeatures, MaterialExtensionsAndGeneratedTangents)
     p["material"] = 0;
     b.doc["materials"] = {{
         {"emissiveFactor", {1, 0.5, 0.25}},
-        {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 40}}}}},
+        {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 40}}}, {"KHR_materials_ior", {{"ior", 1.33}}}}},
         {"normalTexture",
          {{"index", 0},
           {"scale", 0.5},
@@ -1051,6 +1051,8 @@ TEST(GltfFeatures, MaterialExtensionsAndGeneratedTangents)
     const Material& m = scene.materials.at(0);
     EXPECT_EQ(m.emissiveFactor, glm::vec3(1, 0.5, 0.25));
     EXPECT_EQ(m.emissiveStrength, 40.0f);
+    ASSERT_TRUE(m.ior); // KHR_materials_ior
+    EXPECT_FLOAT_EQ(*m.ior, 1.33f);
     EXPECT_EQ(m.normalScale, 0.5f);
     EXPECT_FLOAT_EQ(m.occlusionStrength, 0.3f);
     EXPECT_EQ(m.normalTexture.texCoord, 1); // KHR_texture_transform overrides texCoord 0

@@ -443,9 +443,10 @@ TEST(SceneFile, BadValues)
               "scene.json: render.height must be between 1 and 16384");
     EXPECT_EQ(sceneError(R"({"render": {"height": 99999999999999999999}})"), "scene.json: render.height must be an integer");
     EXPECT_EQ(sceneError(R"({"render": {"tonemap": "filmic"}})"),
-              "scene.json: render.tonemap must be none, reinhard, reinhard-ext, aces or neutral (got 'filmic')");
+              "scene.json: render.tonemap must be none, reinhard, reinhard-ext, aces, neutral or agx (got 'filmic')");
     EXPECT_EQ(sceneError(R"({"render": {"brdfG": "beckmann"}})"),
-              "scene.json: render.brdfG must be smith-ggx or schlick-ggx (got 'beckmann')");
+              "scene.json: render.brdfG must be smith-ggx, smith-ggx-correlated, schlick-ggx, neumann, kelemen, cook-torrance or "
+              "implicit (got 'beckmann')");
 
     EXPECT_EQ(sceneError(R"({"environment": {"color": [1, 1, 1], "file": "a.hdr"}})"),
               "scene.json: environment has both 'color' and 'file'; give one");

@@ -1,0 +1,277 @@
+#include "Viewer.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/Error.h"
+#include "core/ImageIO.h"
+#include "core/Log.h"
+#include "core/ProcessClock.h"
+#include "core/Timer.h"
+#include "gl/Debug.h"
+#include "gl/State.h"
+#include "platform/Context.h"
+#include "scene/Picking.h"
+
+namespace specula::viewer {
+
+namespace {
+
+std::string lowerExtension(const std::string& path)
+{
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
+
+std::vector<render::PlacedLight> currentLights(const render::LightBuffer& buffer)
+{
+    std::vector<render::PlacedLight> lights;
+    for (int i = 0; i < buffer.count(); ++i) lights.push_back(buffer.light(i));
+    return lights;
+}
+
+} // namespace
+
+Viewer::Viewer(platform::Context& context, const cli::FrameOptions& options)
+    : mContext(context), mOptions(options), mRenderer(std::make_unique<render::Renderer>())
+{
+}
+
+Viewer::~Viewer() = default;
+
+void Viewer::loadScene(const std::string& name)
+{
+    Stopwatch load;
+    const bool first = mSceneName.empty();
+    scene::SceneDocument document = cli::loadSceneOrBuiltin(name);
+    render::FrameSettings settings = cli::resolveSettings(document, mOptions);
+    // The first scene brings its environment (or the command line's); a dropped scene keeps
+    // the one on screen.
+    std::optional<render::EnvironmentMap> environment = first ? cli::loadEnvironment(document, mOptions) : mEnvironment;
+    int defaultLights = 0;
+    cli::prepareView(document, mOptions, settings, &defaultLights, environment.has_value());
+    mStartup.sceneLoad = load.elapsedMs();
+    log::info("loaded {} in {:.0f} ms: {} meshes, {} triangles, {} lights{}", name.empty() ? "demo" : name, mStartup.sceneLoad,
+              document.scene.meshes.size(), document.scene.triangleCount(), document.scene.lights.size(),
+              defaultLights ? " (default rig)" : "");
+
+    mRenderer->setScene(document.scene);
+    if (first) {
+        settings.gizmos = true; // the viewer shows where its lights are
+        mSettings = settings;
+        if (environment) {
+            Stopwatch bake;
+            mRenderer->setEnvironment(*environment, cli::resolveBakeSettings(mOptions), cli::cacheDirectory(mOptions));
+            mStartup.environmentBake = bake.elapsedMs();
+            mEnvironmentName = mOptions.env.value_or(document.environment.file.empty() ? "sky" : document.environment.file);
+        }
+        mEnvironment = std::move(environment);
+    }
+    mDocument = std::move(document);
+    mSceneName = name.empty() ? "demo" : name;
+    selectedLight = mRenderer->lights().count() > 0 ? 0 : -1;
+    selectedMaterial = 0;
+    mSceneCamera = first && mOptions.camera >= 0 ? mOptions.camera : -1;
+    mCamera.frame(mDocument.scene.worldBounds());
+}
+
+void Viewer::loadEnvironment(const std::string& file)
+{
+    render::EnvironmentMap map = file == "sky" ? render::proceduralSky() : render::loadEnvironmentMap(file);
+    Stopwatch bake;
+    mRenderer->setEnvironment(map, cli::resolveBakeSettings(mOptions), cli::cacheDirectory(mOptions));
+    log::info("environment {} ready in {:.0f} ms", file, bake.elapsedMs());
+    mEnvironment = std::move(map);
+    mEnvironmentName = file;
+}
+
+void Viewer::openFile(const std::string& path)
+{
+    const std::string extension = lowerExtension(path);
+    try {
+        if (extension == ".hdr" || extension == ".exr") {
+            loadEnvironment(path);
+        } else if (extension == ".gltf" || extension == ".glb" || extension == ".json") {
+            loadScene(path);
+        } else {
+            throw Error("cannot open {}: not a .gltf, .glb, .json, .hdr or .exr file", path);
+        }
+        lastError.clear();
+        lastMessage = "opened " + path;
+    } catch (const std::exception& e) {
+        // The scene and environment on screen stay as they were.
+        lastError = e.what();
+        log::warn("{}", lastError);
+    }
+}
+
+void Viewer::renderFrame(float deltaSeconds)
+{
+    const glm::ivec2 size = mContext.framebufferSize();
+    if (size.x <= 0 || size.y <= 0) return; // minimised
+    mSettings.width = size.x;
+    mSettings.height = size.y;
+    mSettings.autoExposure.deltaTime = deltaSeconds;
+    const float aspect = float(size.x) / float(size.y);
+    const render::View view = mSceneCamera >= 0 ? render::cameraView(mDocument.scene, mSceneCamera, aspect) : mCamera.view(aspect);
+    mLastView = view;
+    mLastSize = glm::vec2(size);
+    mRenderer->setGpuTiming(gpuTiming);
+    mRenderer->render(view, mSettings);
+    mRenderer->present(size.x, size.y);
+    if (mFirstFrame) {
+        mStartup.firstFrame = msSinceProcessStart();
+        mFirstFrame = false;
+    }
+    std::rotate(frameTimes.begin(), frameTimes.begin() + 1, frameTimes.end());
+    frameTimes.back() = deltaSeconds * 1000.0f;
+}
+
+void Viewer::screenshot(const std::filesystem::path& path)
+{
+    writePng(path, mRenderer->readImage());
+    lastMessage = "screenshot: " + std::filesystem::absolute(path).string();
+    log::info("{}", lastMessage);
+}
+
+bool Viewer::reloadShaders()
+{
+    // A fresh renderer compiles every program from the files; the old one keeps running until
+    // the new one has compiled all it needs, so a compile error leaves the last good programs.
+    try {
+        auto fresh = std::make_unique<render::Renderer>();
+        fresh->setScene(mDocument.scene);
+        fresh->lights().setAll(currentLights(mRenderer->lights()));
+        for (int i = 0; i < mRenderer->materialCount(); ++i) fresh->setMaterialShading(i, mRenderer->materialShading(i));
+        if (mEnvironment) fresh->setEnvironment(*mEnvironment, cli::resolveBakeSettings(mOptions), cli::cacheDirectory(mOptions));
+        fresh->prepare(mSettings);
+        mRenderer = std::move(fresh);
+        lastError.clear();
+        lastMessage = "shaders reloaded";
+        log::info("{}", lastMessage);
+        return true;
+    } catch (const std::exception& e) {
+        lastError = e.what();
+        log::warn("shader reload failed, keeping the last good programs: {}", lastError);
+        if (mDebug) mDebug->clear(); // the driver reports the compile error as a GL error too
+        mRenderer->state().reset();
+        return false;
+    }
+}
+
+void Viewer::addLight(scene::Light::Type type)
+{
+    std::vector<render::PlacedLight> lights = currentLights(mRenderer->lights());
+    if (lights.size() >= SPECULA_MAX_LIGHTS) throw Error("at most {} lights", SPECULA_MAX_LIGHTS);
+    render::PlacedLight placed;
+    placed.light.type = type;
+    placed.light.name = type == scene::Light::Type::Spot ? "spot" : type == scene::Light::Type::Point ? "point" : "sun";
+    // Halfway to the camera, up and to the right, towards what the camera looks at: the new
+    // light and its gizmo are in view at once.
+    const glm::vec3 target = mCamera.target();
+    const glm::vec3 toEye = mCamera.eye() - target;
+    const glm::vec3 right = glm::normalize(glm::cross(-toEye, glm::vec3(0, 1, 0)));
+    placed.position = target + 0.5f * toEye + 0.12f * mCamera.distance() * (right + glm::vec3(0, 1, 0));
+    placed.direction = glm::normalize(target - placed.position);
+    const float distance = glm::length(target - placed.position);
+    // About 10 lux at the target: a few times the irradiance of the environments the assets
+    // ship with, so that a new light shows clearly.
+    placed.light.intensity = type == scene::Light::Type::Directional ? 10.0f : 10.0f * distance * distance;
+    placed.light.innerConeAngle = glm::radians(15.0f);
+    placed.light.outerConeAngle = glm::radians(25.0f);
+    lights.push_back(placed);
+    mRenderer->lights().setAll(lights);
+    selectedLight = int(lights.size()) - 1;
+}
+
+void Viewer::removeLight(int index)
+{
+    std::vector<render::PlacedLight> lights = currentLights(mRenderer->lights());
+    if (index < 0 || index >= int(lights.size())) throw Error("no light {} (there are {})", index, lights.size());
+    lights.erase(lights.begin() + index);
+    mRenderer->lights().setAll(lights);
+    selectedLight = std::min(selectedLight, int(lights.size()) - 1);
+}
+
+void Viewer::editLight(int index, const render::PlacedLight& light)
+{
+    render::LightBuffer& buffer = mRenderer->lights();
+    if (index < 0 || index >= buffer.count()) throw Error("no light {} (there are {})", index, buffer.count());
+    const size_t before = buffer.buffer().bytesUpdated();
+    buffer.set(index, light);
+    const gl::Buffer::Range range = buffer.buffer().lastUpdate();
+    mLastLightUpload = {index, range.offset, range.size, buffer.buffer().bytesUpdated() - before, buffer.offsetOf(index),
+                        sizeof(shared::GpuLight)};
+    log::debug("light {}: uploaded {} bytes at offset {}", index, mLastLightUpload.bytes, range.offset);
+}
+
+void Viewer::setMaterialModel(int material, scene::ShadingModel model)
+{
+    if (material < 0 || material >= mRenderer->materialCount())
+        throw Error("no material {} (there are {})", material, mRenderer->materialCount());
+    scene::MaterialShading shading = mRenderer->materialShading(material);
+    shading.model = model;
+    setMaterialShading(material, shading);
+}
+
+void Viewer::setMaterialShading(int material, const scene::MaterialShading& shading)
+{
+    if (material < 0 || material >= mRenderer->materialCount())
+        throw Error("no material {} (there are {})", material, mRenderer->materialCount());
+    mRenderer->setMaterialShading(material, shading);
+    // The scene's copy too, so that a shader reload or the panel sees it.
+    if (material < int(mDocument.scene.materials.size())) mDocument.scene.materials[size_t(material)].shading = shading;
+}
+
+void Viewer::setMaterialParameter(int material, render::MaterialParameter parameter, const glm::vec4& value)
+{
+    if (material < 0 || material >= mRenderer->materialCount())
+        throw Error("no material {} (there are {})", material, mRenderer->materialCount());
+    mRenderer->setMaterialParameter(material, parameter, value);
+    // Keep the scene's copy in step so that the panel shows it and a shader reload keeps it.
+    if (material >= int(mDocument.scene.materials.size())) return;
+    scene::Material& m = mDocument.scene.materials[size_t(material)];
+    switch (parameter) {
+    case render::MaterialParameter::BaseColor: m.baseColorFactor = value; break;
+    case render::MaterialParameter::Emissive: m.emissiveFactor = glm::vec3(value); m.emissiveStrength = 1.0f; break;
+    case render::MaterialParameter::Metallic: m.metallicFactor = value.x; break;
+    case render::MaterialParameter::Roughness: m.roughnessFactor = value.x; break;
+    case render::MaterialParameter::Shininess: m.shininess = value.x; break;
+    default: break;
+    }
+}
+
+int Viewer::pickMaterial(float x, float y)
+{
+    // The pixel's centre back through the last frame's camera: NDC at the near and far planes.
+    const glm::vec2 ndc(2.0f * (x + 0.5f) / mLastSize.x - 1.0f, 1.0f - 2.0f * (y + 0.5f) / mLastSize.y);
+    const glm::mat4 inverse = glm::inverse(mLastView.projection * mLastView.view);
+    const glm::vec4 nearPoint = inverse * glm::vec4(ndc, -1.0f, 1.0f);
+    const glm::vec4 farPoint = inverse * glm::vec4(ndc, 1.0f, 1.0f);
+    const glm::vec3 origin = glm::vec3(nearPoint) / nearPoint.w;
+    const glm::vec3 direction = glm::vec3(farPoint) / farPoint.w - origin;
+    const auto hit = scene::pick(mDocument.scene, origin, direction);
+    if (!hit) return -1;
+    // The renderer's registry puts the glTF default material after the scene's.
+    selectedMaterial = hit->material >= 0 ? hit->material : int(mDocument.scene.materials.size());
+    lastMessage = "picked material " + std::to_string(selectedMaterial);
+    openMaterialsPanel = true;
+    log::info("{} (node {}, mesh {})", lastMessage, hit->node, hit->mesh);
+    return selectedMaterial;
+}
+
+void Viewer::useCamera(int index)
+{
+    if (index >= int(mDocument.scene.cameraInstances().size()))
+        throw Error("no camera {} (the scene has {})", index, mDocument.scene.cameraInstances().size());
+    mSceneCamera = std::max(index, -1);
+}
+
+void Viewer::resetCamera()
+{
+    mSceneCamera = -1;
+    mCamera.frame(mDocument.scene.worldBounds());
+}
+
+} // namespace specula::viewer

@@ -1,0 +1,126 @@
+#pragma once
+// The viewer's state and the actions the UI, the keys and scripts share. Rendering is
+// render::Renderer's; this class only decides what to render and with which settings.
+#include <array>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "OrbitCamera.h"
+#include "app/cli/SceneSetup.h"
+#include "render/LightBuffer.h"
+#include "render/Renderer.h"
+
+namespace specula::gl {
+class DebugMonitor;
+}
+namespace specula::platform {
+class Context;
+}
+
+namespace specula::viewer {
+
+/// Start-up costs, milliseconds.
+struct StartupTimes {
+    double context = 0.0;
+    double sceneLoad = 0.0;
+    double environmentBake = 0.0;
+    double firstFrame = 0.0; ///< since the process started
+};
+
+/// What the last edit of a light uploaded (to check that it touched only that light's bytes).
+struct LightUpload {
+    int light = -1;
+    size_t offset = 0;     ///< Buffer::lastUpdate of the edit
+    size_t size = 0;
+    size_t bytes = 0;      ///< bytes uploaded by the whole edit
+    size_t lightOffset = 0; ///< where light `light` lives in the buffer
+    size_t lightSize = 0;
+    bool onlyThatLight() const { return offset == lightOffset && size == lightSize && bytes == lightSize; }
+};
+
+class Viewer {
+public:
+    Viewer(platform::Context& context, const cli::FrameOptions& options);
+    ~Viewer();
+
+    // Files. A failed load throws specula::Error and leaves the current scene or environment.
+    void loadScene(const std::string& name);
+    void loadEnvironment(const std::string& file);
+    /// A dropped file: scene or environment by extension. Errors go to lastError().
+    void openFile(const std::string& path);
+
+    /// Renders one frame at the window's size and presents it (the UI draws on top).
+    void renderFrame(float deltaSeconds);
+    void screenshot(const std::filesystem::path& path);
+    /// Rebuilds the renderer from the shader files; on a compile error keeps the old one.
+    bool reloadShaders();
+
+    // Lights: add/remove rewrite the whole buffer, editing one light only its bytes.
+    void addLight(scene::Light::Type type);
+    void removeLight(int index);
+    void editLight(int index, const render::PlacedLight& light);
+    const LightUpload& lastLightUpload() const { return mLastLightUpload; }
+
+    void setMaterialModel(int material, scene::ShadingModel model);
+    void setMaterialShading(int material, const scene::MaterialShading& shading);
+    void setMaterialParameter(int material, render::MaterialParameter parameter, const glm::vec4& value);
+
+    /// Selects the material of the surface under window pixel (x, y) (top left = 0, 0) in the
+    /// last frame; returns it, or -1 when the ray meets nothing (selection unchanged).
+    int pickMaterial(float x, float y);
+
+    /// Selects the orbit camera (-1) or a scene camera.
+    void useCamera(int index);
+    void resetCamera();
+
+    platform::Context& context() { return mContext; }
+    render::Renderer& renderer() { return *mRenderer; }
+    render::FrameSettings& settings() { return mSettings; }
+    scene::SceneDocument& document() { return mDocument; }
+    OrbitCamera& camera() { return mCamera; }
+    int sceneCamera() const { return mSceneCamera; }
+    const std::string& sceneName() const { return mSceneName; }
+    const std::string& environmentName() const { return mEnvironmentName; }
+    const StartupTimes& startup() const { return mStartup; }
+    void setContextTime(double ms) { mStartup.context = ms; }
+    /// The monitor whose errors a failed shader reload clears: a compile error in an edited
+    /// shader is the user's to fix (shown in the UI), not a bug of the viewer.
+    void setDebugMonitor(gl::DebugMonitor* monitor) { mDebug = monitor; }
+
+    int selectedLight = -1;
+    int selectedMaterial = 0;
+    bool showUi = true;
+    bool flyMode = false;
+    bool openMaterialsPanel = false; ///< a pick opens the Materials panel on the next frame
+    bool gpuTiming = true;
+    std::string lastError;   ///< shown in the UI until dismissed
+    std::string lastMessage; ///< e.g. where a screenshot went
+    float brdfViewDegrees = 30.0f;            ///< BRDF explorer: angle of the view to the normal
+    std::array<char, 512> environmentInput{}; ///< Environment panel: the path being typed
+    /// Frame times (ms), oldest first, for the graph.
+    std::array<float, 120> frameTimes{};
+
+private:
+    void uploadScene();
+    platform::Context& mContext;
+    cli::FrameOptions mOptions;
+    std::unique_ptr<render::Renderer> mRenderer;
+    scene::SceneDocument mDocument;
+    std::optional<render::EnvironmentMap> mEnvironment;
+    render::FrameSettings mSettings;
+    OrbitCamera mCamera;
+    int mSceneCamera = -1;
+    std::string mSceneName;
+    std::string mEnvironmentName;
+    StartupTimes mStartup;
+    LightUpload mLastLightUpload;
+    bool mFirstFrame = true;
+    render::View mLastView;
+    glm::vec2 mLastSize{1.0f};
+    gl::DebugMonitor* mDebug = nullptr;
+};
+
+} // namespace specula::viewer

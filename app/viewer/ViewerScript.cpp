@@ -1,0 +1,273 @@
+#include "ViewerScript.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "Viewer.h"
+#include "core/Error.h"
+#include "core/Log.h"
+#include "platform/Context.h"
+
+namespace specula::viewer {
+
+namespace {
+
+/// The words of a line, with typed access that names what was expected.
+class Words {
+public:
+    explicit Words(const std::string& line)
+    {
+        std::istringstream in(line);
+        for (std::string word; in >> word;) mWords.push_back(word);
+    }
+    const std::string& action() const { return mWords[0]; }
+    size_t size() const { return mWords.size(); }
+    const std::string& text(size_t i) const
+    {
+        if (i >= mWords.size()) throw Error("'{}' wants {} argument(s)", action(), i);
+        return mWords[i];
+    }
+    float number(size_t i) const
+    {
+        const std::string& word = text(i);
+        size_t used = 0;
+        float value = 0.0f;
+        try {
+            value = std::stof(word, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != word.size()) throw Error("'{}': '{}' is not a number", action(), word);
+        return value;
+    }
+    int integer(size_t i) const { return int(number(i)); }
+    glm::vec3 vec3(size_t i) const { return {number(i), number(i + 1), number(i + 2)}; }
+
+private:
+    std::vector<std::string> mWords;
+};
+
+bool* toggleTarget(Viewer& viewer, const std::string& name)
+{
+    render::FrameSettings& s = viewer.settings();
+    if (name == "bloom") return &s.bloom.enabled;
+    if (name == "ssao") return &s.ssao.enabled;
+    if (name == "fxaa") return &s.fxaa.enabled;
+    if (name == "auto-exposure") return &s.autoExposure.enabled;
+    if (name == "skybox") return &s.environment.skybox;
+    if (name == "ibl") return &s.environment.lighting;
+    if (name == "gizmos") return &s.gizmos;
+    if (name == "energy-compensation") return &s.energyCompensation;
+    if (name == "ui") return &viewer.showUi;
+    if (name == "fly") return &viewer.flyMode;
+    return nullptr;
+}
+
+float* valueTarget(Viewer& viewer, const std::string& name)
+{
+    render::FrameSettings& s = viewer.settings();
+    if (name == "exposure") return &s.exposureEv;
+    if (name == "bloom-intensity") return &s.bloom.intensity;
+    if (name == "bloom-radius") return &s.bloom.radius;
+    if (name == "bloom-threshold") return &s.bloom.threshold;
+    if (name == "env-intensity") return &s.environment.intensity;
+    if (name == "env-rotation") return &s.environment.rotationDegrees;
+    if (name == "skybox-blur") return &s.environment.skyboxBlur;
+    if (name == "ssao-radius") return &s.ssao.radius;
+    return nullptr;
+}
+
+render::PlacedLight lightAt(Viewer& viewer, int index)
+{
+    const render::LightBuffer& lights = viewer.renderer().lights();
+    if (index < 0 || index >= lights.count()) throw Error("no light {} (there are {})", index, lights.count());
+    return lights.light(index);
+}
+
+} // namespace
+
+ViewerScript::ViewerScript(const std::filesystem::path& path) : mPath(path)
+{
+    std::ifstream in(path);
+    if (!in) throw Error("cannot read script {}", path.string());
+    for (std::string line; std::getline(in, line);) mLines.push_back(line);
+}
+
+int ViewerScript::runUntilFrames(Viewer& viewer)
+{
+    while (mNext < mLines.size()) {
+        const size_t number = ++mNext;
+        try {
+            const int frames = run(viewer, mLines[number - 1]);
+            if (frames > 0) return frames;
+        } catch (const std::exception& e) {
+            throw Error("{}:{}: {}", mPath.string(), number, e.what());
+        }
+    }
+    return 0;
+}
+
+int ViewerScript::run(Viewer& viewer, const std::string& line)
+{
+    const size_t hash = line.find('#');
+    const Words w(hash == std::string::npos ? line : line.substr(0, hash));
+    if (w.size() == 0) return 0;
+    const std::string& a = w.action();
+    log::info("script: {}", line);
+
+    if (a == "frames") {
+        const int n = w.integer(1);
+        if (n < 1) throw Error("frames wants a count of at least 1");
+        return n;
+    }
+    // Camera.
+    if (a == "orbit") { viewer.camera().orbit(w.number(1), w.number(2)); viewer.useCamera(-1); return 0; }
+    if (a == "pan") { viewer.camera().pan(w.number(1), w.number(2)); viewer.useCamera(-1); return 0; }
+    if (a == "zoom") { viewer.camera().zoom(w.number(1)); viewer.useCamera(-1); return 0; }
+    if (a == "look") { viewer.camera().look(w.number(1), w.number(2)); viewer.useCamera(-1); return 0; }
+    if (a == "fly-move") { viewer.camera().move(w.vec3(1)); viewer.useCamera(-1); return 0; }
+    if (a == "frame" || a == "reset-camera") { viewer.resetCamera(); return 0; }
+    if (a == "camera") { viewer.useCamera(w.integer(1)); return 0; }
+    // Lights.
+    if (a == "select-light") { lightAt(viewer, w.integer(1)); viewer.selectedLight = w.integer(1); return 0; }
+    if (a == "add-light") {
+        const std::string& type = w.text(1);
+        if (type == "point") viewer.addLight(scene::Light::Type::Point);
+        else if (type == "spot") viewer.addLight(scene::Light::Type::Spot);
+        else if (type == "directional") viewer.addLight(scene::Light::Type::Directional);
+        else throw Error("add-light wants point, spot or directional (got '{}')", type);
+        return 0;
+    }
+    if (a == "remove-light") { viewer.removeLight(w.integer(1)); return 0; }
+    if (a.starts_with("light-")) {
+        const int i = w.integer(1);
+        render::PlacedLight l = lightAt(viewer, i);
+        if (a == "light-color") l.light.color = w.vec3(2);
+        else if (a == "light-intensity") l.light.intensity = w.number(2);
+        else if (a == "light-position") l.position = w.vec3(2);
+        else if (a == "light-direction") l.direction = w.vec3(2);
+        else if (a == "light-range") l.light.range = w.number(2);
+        else if (a == "light-cone") {
+            l.light.innerConeAngle = glm::radians(w.number(2));
+            l.light.outerConeAngle = glm::radians(w.number(3));
+        } else throw Error("unknown action '{}'", a);
+        viewer.editLight(i, l);
+        return 0;
+    }
+    if (a == "expect-light-upload") {
+        const LightUpload& u = viewer.lastLightUpload();
+        const int i = w.integer(1);
+        // One line a test can read: what the last light edit wrote, and where the light lives.
+        log::info("light upload: light {} wrote {} bytes, last range [{}, {}); light {} is [{}, {})", u.light, u.bytes, u.offset,
+                  u.offset + u.size, i, u.lightOffset, u.lightOffset + u.lightSize);
+        if (u.light != i || !u.onlyThatLight())
+            throw Error("the last light edit did not rewrite exactly light {}'s bytes", i);
+        return 0;
+    }
+    // Materials.
+    if (a == "pick") {
+        // pick X Y [EXPECTED]: click at window pixel (X, Y); with EXPECTED, fail unless that
+        // material is picked.
+        const int picked = viewer.pickMaterial(w.number(1), w.number(2));
+        if (w.size() > 3 && picked != w.integer(3)) throw Error("picked material {}, expected {}", picked, w.integer(3));
+        return 0;
+    }
+    if (a == "select-material") { viewer.selectedMaterial = w.integer(1); return 0; }
+    if (a == "material-model") {
+        const auto model = scene::parseShadingModel(w.text(2));
+        if (!model) throw Error("unknown shading model '{}' ({})", w.text(2), scene::shadingModelNames());
+        viewer.setMaterialModel(w.integer(1), *model);
+        return 0;
+    }
+    if (a == "material-brdf") {
+        // material-brdf I d|g|f|diffuse NAME|default
+        const int i = w.integer(1);
+        const std::string& term = w.text(2);
+        const std::string& name = w.text(3);
+        if (i < 0 || i >= viewer.renderer().materialCount()) throw Error("no material {}", i);
+        scene::MaterialShading shading = viewer.renderer().materialShading(i);
+        const bool unset = name == "default";
+        auto pick = [&](auto& field, auto parsed, const char* names) {
+            if (unset) {
+                field.reset();
+            } else if (parsed) {
+                field = *parsed;
+            } else {
+                throw Error("unknown {} term '{}' ({})", term, name, names);
+            }
+        };
+        if (term == "d") pick(shading.distribution, scene::parseBrdfDistribution(name), scene::brdfDistributionNames());
+        else if (term == "g") pick(shading.geometry, scene::parseBrdfGeometryName(name), scene::brdfGeometryNames());
+        else if (term == "f") pick(shading.fresnel, scene::parseBrdfFresnel(name), scene::brdfFresnelNames());
+        else if (term == "diffuse") pick(shading.diffuse, scene::parseBrdfDiffuse(name), scene::brdfDiffuseNames());
+        else throw Error("material-brdf wants d, g, f or diffuse (got '{}')", term);
+        viewer.setMaterialShading(i, shading);
+        return 0;
+    }
+    if (a == "material-color") {
+        viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::BaseColor, glm::vec4(w.vec3(2), w.size() > 5 ? w.number(5) : 1.0f));
+        return 0;
+    }
+    if (a == "material-roughness") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Roughness, glm::vec4(w.number(2))); return 0; }
+    if (a == "material-metallic") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Metallic, glm::vec4(w.number(2))); return 0; }
+    // Frame settings.
+    if (a == "toggle") {
+        bool* flag = toggleTarget(viewer, w.text(1));
+        if (!flag) throw Error("cannot toggle '{}' (bloom, ssao, fxaa, auto-exposure, skybox, ibl, gizmos, energy-compensation, ui, fly)", w.text(1));
+        *flag = !*flag;
+        return 0;
+    }
+    if (a == "set") {
+        float* value = valueTarget(viewer, w.text(1));
+        if (!value) throw Error("cannot set '{}'", w.text(1));
+        *value = w.number(2);
+        return 0;
+    }
+    if (a == "tonemap") {
+        const auto tonemap = render::parseTonemap(w.text(1));
+        if (!tonemap) throw Error("unknown tone mapper '{}'", w.text(1));
+        viewer.settings().tonemap = *tonemap;
+        return 0;
+    }
+    if (a == "debug-view") {
+        const auto view = render::parseDebugView(w.text(1));
+        if (!view) throw Error("unknown debug view '{}'", w.text(1));
+        viewer.settings().debugView = *view;
+        return 0;
+    }
+    // Files and tools.
+    if (a == "open") { viewer.openFile(w.text(1)); return 0; }
+    if (a == "env") {
+        if (w.text(1) == "sky") {
+            viewer.loadEnvironment("sky");
+        } else {
+            viewer.openFile(w.text(1));
+        }
+        return 0;
+    }
+    if (a == "expect-error") {
+        if (viewer.lastError.empty()) throw Error("expected the UI to show an error; it shows none");
+        log::info("UI error: {}", viewer.lastError);
+        viewer.lastError.clear();
+        return 0;
+    }
+    if (a == "expect-no-error") {
+        if (!viewer.lastError.empty()) throw Error("the UI shows an error: {}", viewer.lastError);
+        return 0;
+    }
+    if (a == "resize") {
+        // As a user dragging the window's corner: the next frames render at the new size.
+        const int width = w.integer(1), height = w.integer(2);
+        if (width < 1 || height < 1) throw Error("resize wants a positive width and height");
+        glfwSetWindowSize(static_cast<GLFWwindow*>(viewer.context().nativeWindow()), width, height);
+        return 0;
+    }
+    if (a == "reload-shaders") { viewer.reloadShaders(); return 0; }
+    if (a == "screenshot") { viewer.screenshot(w.text(1)); return 0; }
+    throw Error("unknown action '{}'", a);
+}
+
+} // namespace specula::viewer

@@ -1,0 +1,448 @@
+#include "ViewerUi.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <optional>
+#include <string>
+
+#include "Viewer.h"
+#include "core/Error.h"
+#include "render/Brdf.h"
+
+namespace specula::viewer {
+
+namespace {
+
+std::string timestampedScreenshotName()
+{
+    const std::time_t now = std::time(nullptr);
+    char name[64];
+    std::strftime(name, sizeof(name), "specula-%Y%m%d-%H%M%S.png", std::localtime(&now));
+    return name;
+}
+
+void takeScreenshot(Viewer& viewer)
+{
+    try {
+        viewer.screenshot(timestampedScreenshotName());
+    } catch (const std::exception& e) {
+        viewer.lastError = e.what();
+    }
+}
+
+/// Runs an action that may throw on bad input; the message goes to the UI.
+template <typename Action>
+void guarded(Viewer& viewer, Action&& action)
+{
+    try {
+        action();
+    } catch (const std::exception& e) {
+        viewer.lastError = e.what();
+    }
+}
+
+void drawNode(const scene::Scene& scene, int index)
+{
+    const scene::Node& node = scene.nodes[size_t(index)];
+    const std::string label = (node.name.empty() ? "node " + std::to_string(index) : node.name) +
+                              (node.mesh >= 0 ? "  [mesh]" : "") + (node.camera >= 0 ? "  [camera]" : "") +
+                              (node.light >= 0 ? "  [light]" : "");
+    const ImGuiTreeNodeFlags flags = node.children.empty() ? ImGuiTreeNodeFlags_Leaf : 0;
+    if (ImGui::TreeNodeEx(reinterpret_cast<void*>(intptr_t(index)), flags, "%s", label.c_str())) {
+        for (int child : node.children) drawNode(scene, child);
+        ImGui::TreePop();
+    }
+}
+
+void statisticsPanel(Viewer& viewer)
+{
+    if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::Text("%.1f FPS (%.2f ms)", io.Framerate, 1000.0f / std::max(io.Framerate, 1e-3f));
+    ImGui::PlotLines("frame ms", viewer.frameTimes.data(), int(viewer.frameTimes.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 50));
+    const render::FrameStats& stats = viewer.renderer().stats();
+    ImGui::Text("%d draw calls, %zu triangles", stats.drawCalls, stats.triangles);
+    ImGui::Checkbox("GPU timing per pass", &viewer.gpuTiming);
+    double total = 0.0;
+    for (const render::PassTiming& pass : stats.passes) {
+        ImGui::Text("  %-16s %7.3f ms", pass.name, pass.gpuMs);
+        total += pass.gpuMs;
+    }
+    if (!stats.passes.empty()) ImGui::Text("  %-16s %7.3f ms", "total", total);
+    const StartupTimes& s = viewer.startup();
+    ImGui::Text("start-up: context %.0f ms, scene load %.0f ms,", s.context, s.sceneLoad);
+    ImGui::Text("  environment bake %.0f ms, first frame at %.0f ms", s.environmentBake, s.firstFrame);
+}
+
+void scenePanel(Viewer& viewer)
+{
+    if (!ImGui::CollapsingHeader("Scene")) return;
+    const scene::Scene& scene = viewer.document().scene;
+    ImGui::Text("%s: %zu meshes, %zu materials, %zu triangles", viewer.sceneName().c_str(), scene.meshes.size(),
+                scene.materials.size(), scene.triangleCount());
+    const scene::Bounds bounds = scene.worldBounds();
+    if (!bounds.empty())
+        ImGui::Text("bounds (%.2f %.2f %.2f) to (%.2f %.2f %.2f)", bounds.min.x, bounds.min.y, bounds.min.z, bounds.max.x,
+                    bounds.max.y, bounds.max.z);
+    const auto cameras = scene.cameraInstances();
+    if (ImGui::RadioButton("orbit camera", viewer.sceneCamera() < 0)) viewer.useCamera(-1);
+    for (size_t i = 0; i < cameras.size(); ++i) {
+        const std::string& name = scene.cameras[size_t(cameras[i].camera)].name;
+        const std::string label = "camera " + std::to_string(i) + (name.empty() ? "" : ": " + name);
+        if (ImGui::RadioButton(label.c_str(), viewer.sceneCamera() == int(i))) viewer.useCamera(int(i));
+    }
+    ImGui::Checkbox("fly camera (C; WASD, Q/E, drag to look)", &viewer.flyMode);
+    if (ImGui::TreeNode("nodes")) {
+        for (int root : scene.roots) drawNode(scene, root);
+        ImGui::TreePop();
+    }
+}
+
+void lightsPanel(Viewer& viewer)
+{
+    if (!ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    render::LightBuffer& lights = viewer.renderer().lights();
+    if (ImGui::Button("+ point")) guarded(viewer, [&] { viewer.addLight(scene::Light::Type::Point); });
+    ImGui::SameLine();
+    if (ImGui::Button("+ spot")) guarded(viewer, [&] { viewer.addLight(scene::Light::Type::Spot); });
+    ImGui::SameLine();
+    if (ImGui::Button("+ directional")) guarded(viewer, [&] { viewer.addLight(scene::Light::Type::Directional); });
+    ImGui::Checkbox("gizmos", &viewer.settings().gizmos);
+    static constexpr const char* kTypes[] = {"directional", "point", "spot"};
+    for (int i = 0; i < lights.count(); ++i) {
+        const render::PlacedLight& l = lights.light(i);
+        const std::string label = std::to_string(i) + ": " + (l.light.name.empty() ? "light" : l.light.name) + " (" +
+                                  kTypes[int(l.light.type)] + ")";
+        if (ImGui::Selectable(label.c_str(), viewer.selectedLight == i)) viewer.selectedLight = i;
+    }
+    const int i = viewer.selectedLight;
+    if (i < 0 || i >= lights.count()) return;
+    render::PlacedLight l = lights.light(i);
+    bool changed = false;
+    ImGui::Separator();
+    changed |= ImGui::ColorEdit3("colour", &l.light.color.x);
+    changed |= ImGui::DragFloat(l.light.type == scene::Light::Type::Directional ? "intensity (lux)" : "intensity (cd)",
+                                &l.light.intensity, 0.05f * std::max(l.light.intensity, 1.0f), 0.0f, 1e6f, "%.3f");
+    if (l.light.type != scene::Light::Type::Directional) {
+        changed |= ImGui::DragFloat3("position", &l.position.x, 0.01f);
+        changed |= ImGui::DragFloat("range (0 = infinite)", &l.light.range, 0.05f, 0.0f, 1e4f);
+    }
+    if (l.light.type != scene::Light::Type::Point) changed |= ImGui::DragFloat3("direction", &l.direction.x, 0.01f, -1.0f, 1.0f);
+    if (l.light.type == scene::Light::Type::Spot) {
+        float inner = glm::degrees(l.light.innerConeAngle), outer = glm::degrees(l.light.outerConeAngle);
+        if (ImGui::SliderFloat("inner cone", &inner, 0.0f, outer, "%.1f deg")) {
+            l.light.innerConeAngle = glm::radians(inner);
+            changed = true;
+        }
+        if (ImGui::SliderFloat("outer cone", &outer, inner, 90.0f, "%.1f deg")) {
+            l.light.outerConeAngle = glm::radians(outer);
+            changed = true;
+        }
+    }
+    if (changed) guarded(viewer, [&] { viewer.editLight(i, l); });
+    const LightUpload& u = viewer.lastLightUpload();
+    if (u.light >= 0)
+        ImGui::TextDisabled("last edit: light %d, %zu bytes at offset %zu%s", u.light, u.bytes, u.offset,
+                            u.onlyThatLight() ? " (only its bytes)" : "");
+    if (ImGui::Button("remove")) guarded(viewer, [&] { viewer.removeLight(i); });
+}
+
+/// A combo over an optional enum: "frame default" (unset) or one of `count` values.
+template <typename Enum>
+bool termCombo(const char* label, std::optional<Enum>& value, int count, const char* (*name)(Enum))
+{
+    bool changed = false;
+    if (ImGui::BeginCombo(label, value ? name(*value) : "frame default")) {
+        if (ImGui::Selectable("frame default", !value)) {
+            value.reset();
+            changed = true;
+        }
+        for (int k = 0; k < count; ++k) {
+            if (ImGui::Selectable(name(Enum(k)), value == Enum(k))) {
+                value = Enum(k);
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+void materialsPanel(Viewer& viewer)
+{
+    if (viewer.openMaterialsPanel) ImGui::SetNextItemOpen(true);
+    viewer.openMaterialsPanel = false;
+    if (!ImGui::CollapsingHeader("Materials")) return;
+    ImGui::TextDisabled("click on an object to pick its material");
+    render::Renderer& renderer = viewer.renderer();
+    std::vector<scene::Material>& materials = viewer.document().scene.materials;
+    const int count = renderer.materialCount();
+    if (count == 0) return;
+    int& m = viewer.selectedMaterial;
+    m = std::clamp(m, 0, count - 1);
+    auto nameOf = [&](int i) {
+        return i < int(materials.size()) ? std::to_string(i) + ": " + materials[size_t(i)].name : std::to_string(i) + ": default";
+    };
+    if (ImGui::BeginCombo("material", nameOf(m).c_str())) {
+        for (int i = 0; i < count; ++i)
+            if (ImGui::Selectable(nameOf(i).c_str(), i == m)) m = i;
+        ImGui::EndCombo();
+    }
+    const scene::MaterialShading shading = renderer.materialShading(m);
+    const scene::ShadingModel model = shading.model.value_or(scene::ShadingModel::Pbr);
+    if (ImGui::BeginCombo("shading model", scene::shadingModelName(model))) {
+        for (int k = 0; k < scene::kShadingModelCount; ++k) {
+            const auto candidate = scene::ShadingModel(k);
+            if (ImGui::Selectable(scene::shadingModelName(candidate), candidate == model))
+                guarded(viewer, [&] { viewer.setMaterialModel(m, candidate); });
+        }
+        ImGui::EndCombo();
+    }
+    // The BRDF terms of the physically based model; unset = the frame's choice.
+    scene::MaterialShading terms = shading;
+    bool termsChanged = false;
+    termsChanged |= termCombo("D (distribution)", terms.distribution, 3, scene::brdfDistributionName);
+    termsChanged |= termCombo("G (masking-shadowing)", terms.geometry, 7, scene::brdfGeometryName);
+    termsChanged |= termCombo("F (Fresnel)", terms.fresnel, 3, scene::brdfFresnelName);
+    termsChanged |= termCombo("diffuse", terms.diffuse, 3, scene::brdfDiffuseName);
+    if (termsChanged) guarded(viewer, [&] { viewer.setMaterialShading(m, terms); });
+    // Thumbnails, drawn by ImGui's backend straight from the renderer's textures (sRGB ones
+    // show a little dark: the UI does not encode).
+    static constexpr const char* kSlots[] = {"base colour", "metal/rough", "normal", "occlusion", "emissive"};
+    const std::array<uint32_t, 5> textures = renderer.materialTextureNames(m);
+    bool first = true;
+    for (size_t k = 0; k < textures.size(); ++k) {
+        if (!textures[k]) continue;
+        if (!first) ImGui::SameLine();
+        first = false;
+        ImGui::BeginGroup();
+        ImGui::Image(reinterpret_cast<ImTextureID>(uintptr_t(textures[k])), ImVec2(64, 64));
+        ImGui::TextDisabled("%s", kSlots[k]);
+        ImGui::EndGroup();
+    }
+    if (m >= int(materials.size())) return;
+    scene::Material& mat = materials[size_t(m)];
+    glm::vec4 color = mat.baseColorFactor;
+    if (ImGui::ColorEdit4("base colour", &color.x))
+        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::BaseColor, color); });
+    float metallic = mat.metallicFactor, roughness = mat.roughnessFactor, shininess = mat.shininess;
+    if (ImGui::SliderFloat("metallic", &metallic, 0.0f, 1.0f))
+        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::Metallic, glm::vec4(metallic)); });
+    if (ImGui::SliderFloat("roughness (perceptual)", &roughness, 0.0f, 1.0f))
+        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::Roughness, glm::vec4(roughness)); });
+    glm::vec3 emissive = mat.emissiveFactor * mat.emissiveStrength;
+    if (ImGui::DragFloat3("emissive (cd/m2)", &emissive.x, 0.01f, 0.0f, 1e5f))
+        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::Emissive, glm::vec4(emissive, 0.0f)); });
+    if (ImGui::DragFloat("shininess (0 = from roughness)", &shininess, 0.5f, 0.0f, 1e4f))
+        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::Shininess, glm::vec4(shininess)); });
+}
+
+void brdfPanel(Viewer& viewer)
+{
+    if (!ImGui::CollapsingHeader("BRDF explorer")) return;
+    const std::vector<scene::Material>& materials = viewer.document().scene.materials;
+    const int m = viewer.selectedMaterial;
+    const scene::Material mat = m >= 0 && m < int(materials.size()) ? materials[size_t(m)] : scene::Material{};
+    float& viewDegrees = viewer.brdfViewDegrees;
+    ImGui::SliderFloat("view angle", &viewDegrees, 0.0f, 89.0f, "%.0f deg");
+    // The plane of incidence: light from -89° to 89° on the far side of the normal from the view
+    // (the mirror direction is at +view angle). Factors only: textures are not sampled.
+    render::brdf::Surface surface;
+    surface.baseColor = glm::dvec3(glm::vec3(mat.baseColorFactor));
+    surface.metallic = mat.metallicFactor;
+    surface.perceptualRoughness = std::max<double>(mat.roughnessFactor, render::brdf::kMinPerceptualRoughness);
+    surface.specularFactor = mat.specularFactor;
+    const double alpha = surface.perceptualRoughness * surface.perceptualRoughness;
+    const glm::dvec3 f0 = glm::mix(glm::dvec3(0.04 * mat.specularFactor), surface.baseColor, surface.metallic);
+    constexpr int kSamples = 90;
+    float d[kSamples], v[kSamples], f[kSamples], whole[kSamples];
+    const glm::dvec3 n(0, 0, 1);
+    const double thetaV = glm::radians(double(viewDegrees));
+    const glm::dvec3 view(-std::sin(thetaV), 0.0, std::cos(thetaV));
+    auto luminance = [](const glm::dvec3& c) { return float(0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b); };
+    for (int k = 0; k < kSamples; ++k) {
+        const double thetaL = glm::radians(-89.0 + 178.0 * k / (kSamples - 1));
+        const glm::dvec3 l(std::sin(thetaL), 0.0, std::cos(thetaL));
+        const glm::dvec3 h = glm::normalize(l + view);
+        const double NoV = std::max(glm::dot(n, view), 1e-4), NoL = std::max(glm::dot(n, l), 1e-4);
+        d[k] = float(render::brdf::D_GGX(std::max(h.z, 0.0), alpha));
+        v[k] = float(render::brdf::V_SmithGGX(NoV, NoL, alpha));
+        f[k] = luminance(render::brdf::F_Schlick(f0, std::max(glm::dot(view, h), 0.0)));
+        whole[k] = luminance(render::brdf::evaluate(surface, n, view, l)) * float(NoL);
+    }
+    ImGui::TextDisabled("GGX, Smith-GGX, Schlick; x = light angle -89..89 deg");
+    ImGui::PlotLines("D", d, kSamples, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+    ImGui::PlotLines("V = G/(4 NoL NoV)", v, kSamples, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+    ImGui::PlotLines("F (luminance)", f, kSamples, 0, nullptr, 0.0f, 1.0f, ImVec2(0, 60));
+    ImGui::PlotLines("f x NoL", whole, kSamples, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+}
+
+void environmentPanel(Viewer& viewer)
+{
+    if (!ImGui::CollapsingHeader("Environment")) return;
+    render::EnvironmentView& e = viewer.settings().environment;
+    ImGui::Text("file: %s", viewer.environmentName().empty() ? "(none)" : viewer.environmentName().c_str());
+    std::array<char, 512>& path = viewer.environmentInput;
+    ImGui::InputText("##envpath", path.data(), path.size());
+    ImGui::SameLine();
+    if (ImGui::Button("load")) viewer.openFile(path.data());
+    ImGui::TextDisabled("or drop a .hdr / .exr on the window");
+    ImGui::Checkbox("image-based lighting", &e.lighting);
+    ImGui::DragFloat("intensity", &e.intensity, 0.01f, 0.0f, 1e4f);
+    ImGui::SliderFloat("rotation", &e.rotationDegrees, -180.0f, 180.0f, "%.0f deg");
+    ImGui::Checkbox("skybox", &e.skybox);
+    ImGui::SliderFloat("skybox blur", &e.skyboxBlur, 0.0f, 1.0f);
+}
+
+void postPanel(Viewer& viewer)
+{
+    if (!ImGui::CollapsingHeader("Post-processing", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    render::FrameSettings& s = viewer.settings();
+    ImGui::SliderFloat("exposure (EV)", &s.exposureEv, -10.0f, 10.0f);
+    if (ImGui::BeginCombo("tone mapper", render::tonemapName(s.tonemap))) {
+        for (auto t : {render::Tonemap::None, render::Tonemap::Reinhard, render::Tonemap::ReinhardExtended, render::Tonemap::Aces,
+                       render::Tonemap::Neutral, render::Tonemap::Agx})
+            if (ImGui::Selectable(render::tonemapName(t), t == s.tonemap)) s.tonemap = t;
+        ImGui::EndCombo();
+    }
+    if (s.tonemap == render::Tonemap::ReinhardExtended) ImGui::DragFloat("white point", &s.reinhardWhite, 0.05f, 0.1f, 100.0f);
+    {
+        static constexpr int kSamples[] = {1, 2, 4, 8};
+        int index = s.msaa >= 8 ? 3 : s.msaa >= 4 ? 2 : s.msaa >= 2 ? 1 : 0;
+        if (ImGui::Combo("MSAA samples", &index, "1\0" "2\0" "4\0" "8\0")) s.msaa = kSamples[index];
+    }
+    ImGui::Checkbox("energy compensation", &s.energyCompensation);
+    if (ImGui::TreeNodeEx("bloom", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::Checkbox("enabled##bloom", &s.bloom.enabled);
+        ImGui::SliderFloat("intensity##bloom", &s.bloom.intensity, 0.0f, 1.0f);
+        ImGui::SliderInt("levels", &s.bloom.levels, 1, 8);
+        ImGui::SliderFloat("radius##bloom", &s.bloom.radius, 0.1f, 4.0f);
+        ImGui::DragFloat("threshold", &s.bloom.threshold, 0.01f, 0.0f, 100.0f);
+        ImGui::SliderFloat("knee", &s.bloom.knee, 0.0f, 1.0f);
+        ImGui::Checkbox("firefly filter", &s.bloom.fireflyFilter);
+        ImGui::TreePop();
+    }
+    if (ImGui::TreeNode("SSAO")) {
+        ImGui::Checkbox("enabled##ssao", &s.ssao.enabled);
+        ImGui::SliderFloat("radius (m)", &s.ssao.radius, 0.01f, 5.0f);
+        ImGui::SliderFloat("bias (m)", &s.ssao.bias, 0.0f, 0.2f);
+        ImGui::SliderFloat("power", &s.ssao.power, 0.1f, 4.0f);
+        ImGui::SliderInt("samples##ssao", &s.ssao.samples, 1, 64);
+        ImGui::TreePop();
+    }
+    if (ImGui::TreeNode("auto exposure")) {
+        ImGui::Checkbox("enabled##ae", &s.autoExposure.enabled);
+        ImGui::DragFloatRange2("EV100 range", &s.autoExposure.minEv100, &s.autoExposure.maxEv100, 0.1f, -10.0f, 20.0f);
+        ImGui::SliderFloat("low percentile", &s.autoExposure.lowPercentile, 0.0f, 0.5f);
+        ImGui::SliderFloat("high percentile", &s.autoExposure.highPercentile, 0.5f, 1.0f);
+        ImGui::DragFloat("speed up (1/s)", &s.autoExposure.speedUp, 0.05f, 0.0f, 20.0f);
+        ImGui::DragFloat("speed down (1/s)", &s.autoExposure.speedDown, 0.05f, 0.0f, 20.0f);
+        ImGui::TreePop();
+    }
+    ImGui::Checkbox("FXAA", &s.fxaa.enabled);
+    if (ImGui::BeginCombo("debug view", render::debugViewName(s.debugView))) {
+        // Every view up to the last one (BrdfF), material inputs and BRDF terms included.
+        for (int k = 0; k <= int(render::DebugView::BrdfF); ++k) {
+            const auto d = render::DebugView(k);
+            if (ImGui::Selectable(render::debugViewName(d), d == s.debugView)) s.debugView = d;
+        }
+        ImGui::EndCombo();
+    }
+}
+
+} // namespace
+
+void handleInput(Viewer& viewer, float deltaSeconds)
+{
+    const ImGuiIO& io = ImGui::GetIO();
+    OrbitCamera& camera = viewer.camera();
+    if (!io.WantCaptureMouse) {
+        // Degrees per pixel dragged: half a turn across a 720-pixel-high window.
+        constexpr float kDegreesPerPixel = 0.25f;
+        const float height = std::max(io.DisplaySize.y, 1.0f);
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+            viewer.useCamera(-1);
+            if (viewer.flyMode) {
+                // Like a first-person game: drag right looks right, drag down looks down.
+                camera.look(-io.MouseDelta.x * kDegreesPerPixel, io.MouseDelta.y * kDegreesPerPixel);
+            } else {
+                camera.orbit(-io.MouseDelta.x * kDegreesPerPixel, io.MouseDelta.y * kDegreesPerPixel);
+            }
+        }
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0.0f)) {
+            viewer.useCamera(-1);
+            camera.pan(-io.MouseDelta.x / height, io.MouseDelta.y / height);
+        }
+        // A click without a drag picks the material under the cursor.
+        if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < 9.0f)
+            viewer.pickMaterial(io.MousePos.x * io.DisplayFramebufferScale.x, io.MousePos.y * io.DisplayFramebufferScale.y);
+        if (io.MouseWheel != 0.0f) {
+            viewer.useCamera(-1);
+            camera.zoom(std::pow(1.1f, io.MouseWheel));
+        }
+    }
+    if (io.WantCaptureKeyboard) return;
+    if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) {
+        viewer.useCamera(-1);
+        camera.frame(viewer.document().scene.worldBounds());
+    }
+    if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) viewer.resetCamera();
+    if (ImGui::IsKeyPressed(GLFW_KEY_P, false) || ImGui::IsKeyPressed(GLFW_KEY_F12, false)) takeScreenshot(viewer);
+    if (ImGui::IsKeyPressed(GLFW_KEY_H, false) || ImGui::IsKeyPressed(GLFW_KEY_TAB, false)) viewer.showUi = !viewer.showUi;
+    if (ImGui::IsKeyPressed(GLFW_KEY_F5, false)) viewer.reloadShaders();
+    if (ImGui::IsKeyPressed(GLFW_KEY_C, false)) viewer.flyMode = !viewer.flyMode;
+    if (viewer.flyMode) {
+        glm::vec3 move(0.0f);
+        if (ImGui::IsKeyDown(GLFW_KEY_W)) move.z += 1.0f;
+        if (ImGui::IsKeyDown(GLFW_KEY_S)) move.z -= 1.0f;
+        if (ImGui::IsKeyDown(GLFW_KEY_D)) move.x += 1.0f;
+        if (ImGui::IsKeyDown(GLFW_KEY_A)) move.x -= 1.0f;
+        if (ImGui::IsKeyDown(GLFW_KEY_E)) move.y += 1.0f;
+        if (ImGui::IsKeyDown(GLFW_KEY_Q)) move.y -= 1.0f;
+        if (move != glm::vec3(0.0f)) {
+            viewer.useCamera(-1);
+            camera.move(move * camera.flySpeed() * deltaSeconds);
+        }
+    }
+}
+
+void drawUi(Viewer& viewer)
+{
+    if (!viewer.lastError.empty()) {
+        // Errors stay on screen until dismissed, whether or not the panels are shown.
+        // Bottom left, clear of the main panel; wide enough for a compile error's file and line.
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        ImGui::SetNextWindowPos(ImVec2(10, display.y - 10), ImGuiCond_Always, ImVec2(0, 1));
+        ImGui::Begin("Error", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 110, 255));
+        ImGui::PushTextWrapPos(std::max(200.0f, std::min(700.0f, display.x - 40.0f)));
+        ImGui::TextUnformatted(viewer.lastError.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::PopStyleColor();
+        if (ImGui::Button("dismiss")) viewer.lastError.clear();
+        ImGui::End();
+    }
+    if (!viewer.showUi) return;
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(420, std::max(300.0f, ImGui::GetIO().DisplaySize.y - 20.0f)), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Specula");
+    ImGui::TextDisabled("F frame  R reset  P screenshot  H hide UI  F5 reload shaders  C fly");
+    if (!viewer.lastMessage.empty()) ImGui::TextWrapped("%s", viewer.lastMessage.c_str());
+    statisticsPanel(viewer);
+    scenePanel(viewer);
+    lightsPanel(viewer);
+    materialsPanel(viewer);
+    brdfPanel(viewer);
+    environmentPanel(viewer);
+    postPanel(viewer);
+    ImGui::End();
+}
+
+} // namespace specula::viewer

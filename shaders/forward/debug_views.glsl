@@ -1,0 +1,59 @@
+// Debug views of the forward pass (render::DebugView): one material input or one term of the
+// BRDF in place of the frame. The renderer turns exposure and tone mapping off for them, so
+// the sRGB output shows colours (base colour, emissive) as authored, and scalars, normals and
+// BRDF terms are written sRGB-decoded so that the 8-bit output is value × 255.
+// Included by pbr.frag after brdf/brdf.glsl and lights/punctual.glsl.
+#include "../common/color.glsl"
+
+#if defined(DEBUG_VIEW_BASE_COLOR) || defined(DEBUG_VIEW_NORMAL) || defined(DEBUG_VIEW_ROUGHNESS) || \
+    defined(DEBUG_VIEW_METALLIC) || defined(DEBUG_VIEW_OCCLUSION) || defined(DEBUG_VIEW_EMISSIVE) || \
+    defined(DEBUG_VIEW_BRDF_D) || defined(DEBUG_VIEW_BRDF_G) || defined(DEBUG_VIEW_BRDF_F)
+#define DEBUG_VIEW
+#endif
+
+vec3 debugBytes(vec3 value)
+{
+    return srgbToLinear(clamp(value, 0.0, 1.0));
+}
+
+// D relative to its peak D(n·h = 1) (every D here peaks at the normal), G, and F, for the
+// first light of the frame (black without lights and where it does not reach).
+vec3 debugBrdfTerm(vec3 baseColor, float metallic, float perceptualRoughness, vec3 n, vec3 v)
+{
+    if (lightData.count.x == 0u) return vec3(0.0);
+    vec3 l;
+    lightIlluminance(lightData.lights[0], vWorldPosition, l);
+    float NoL = dot(n, l);
+    if (NoL <= 0.0) return vec3(0.0);
+    SurfaceBrdf s = makeSurfaceBrdf(baseColor, metallic, perceptualRoughness, material.specular);
+    vec3 h = normalize(v + l);
+    float NoV = abs(dot(n, v));
+    float NoH = saturate(dot(n, h));
+    float VoH = saturate(dot(v, h));
+#if defined(DEBUG_VIEW_BRDF_D)
+    return vec3(brdfD(NoH, s.alpha) / brdfD(1.0, s.alpha));
+#elif defined(DEBUG_VIEW_BRDF_G)
+    return vec3(brdfV(s, NoV, NoL, NoH, VoH) * 4.0 * NoL * NoV);
+#else
+    return brdfF(s, VoH);
+#endif
+}
+
+vec3 debugViewValue(vec3 baseColor, float metallic, float perceptualRoughness, vec3 n, vec3 v, float occlusion, vec3 emissive)
+{
+#if defined(DEBUG_VIEW_BASE_COLOR)
+    return baseColor;
+#elif defined(DEBUG_VIEW_NORMAL)
+    return debugBytes(n * 0.5 + 0.5); // world space
+#elif defined(DEBUG_VIEW_ROUGHNESS)
+    return debugBytes(vec3(perceptualRoughness));
+#elif defined(DEBUG_VIEW_METALLIC)
+    return debugBytes(vec3(metallic));
+#elif defined(DEBUG_VIEW_OCCLUSION)
+    return debugBytes(vec3(occlusion));
+#elif defined(DEBUG_VIEW_EMISSIVE)
+    return emissive;
+#else
+    return debugBytes(debugBrdfTerm(baseColor, metallic, perceptualRoughness, n, v));
+#endif
+}

@@ -1,0 +1,45 @@
+// The material system on the command line: --shading, --brdf-*, --debug-view and gallery.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "CliRunner.h"
+#include "core/ImageIO.h"
+
+using namespace specula::test;
+namespace fs = std::filesystem;
+
+TEST(CliMaterials, ShadingAndBrdfFlagsRender)
+{
+    const std::string dir = tempDir("materials-flags");
+    const auto r = runCli("render -o " + dir + "/phong.png --width 96 --height 64 --shading blinn-phong");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir + "/phong.png"));
+    const auto v = runCli("render -o " + dir + "/variants.png --width 96 --height 64 --brdf-d beckmann --brdf-g kelemen "
+                          "--brdf-f schlick-sg --brdf-diffuse burley --debug-view brdf-g");
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    EXPECT_TRUE(fs::exists(dir + "/variants.png"));
+}
+
+TEST(CliMaterials, BadNamesFailInOneLine)
+{
+    const std::string dir = tempDir("materials-bad");
+    for (const char* flags : {"--shading toon", "--brdf-d ggx2", "--brdf-g smith", "--brdf-f fresnel", "--brdf-diffuse disney",
+                              "--debug-view albedo"}) {
+        const auto r = runCli("render -o " + dir + "/out.png --width 32 --height 32 " + flags);
+        EXPECT_NE(r.exitCode, 0) << flags;
+        EXPECT_EQ(r.errorLines(), 1) << flags << ": " << r.err;
+        EXPECT_FALSE(fs::exists(dir + "/out.png"));
+    }
+}
+
+TEST(CliMaterials, GalleryWritesOneSheet)
+{
+    const std::string dir = tempDir("materials-gallery");
+    const auto r = runCli("gallery -o " + dir + "/sheet.png --width 64 --height 48 --columns 3");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const specula::ImageRGBA8 sheet = specula::readPng(dir + "/sheet.png");
+    // Six models in two rows of three 64-pixel tiles, with captions and padding.
+    EXPECT_GT(sheet.width, 3 * 64);
+    EXPECT_GT(sheet.height, 2 * 48);
+}

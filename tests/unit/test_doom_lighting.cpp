@@ -1,0 +1,67 @@
+// Doom-era lighting (scene/DoomLighting.h): sector light spreading against hand-computed
+// levels, Doom's light diminishing, and a colour map that only ever yields palette colours.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "scene/DoomLighting.h"
+
+using namespace specula::scene::doom;
+
+TEST(DoomLighting, LightSpreadsToAdjacentSectorsWithAttenuation)
+{
+    // Floor plan (map units):   A | B | C        A 255, B 0, C 0, D 160; D lies below C.
+    //                                 D          E is apart (touches nothing) at 40.
+    const std::vector<Sector> sectors = {
+        {{0, 0}, {64, 64}, 255},     // A
+        {{64, 0}, {128, 64}, 0},     // B
+        {{128, 0}, {192, 64}, 0},    // C
+        {{128, 64}, {192, 128}, 160}, // D
+        {{400, 400}, {464, 464}, 40}, // E
+    };
+    const auto pairs = adjacentSectors(sectors);
+    const std::set<std::pair<int, int>> expectedPairs = {{0, 1}, {1, 2}, {2, 3}};
+    const std::set<std::pair<int, int>> gotPairs(pairs.begin(), pairs.end());
+    EXPECT_EQ(gotPairs, expectedPairs);
+    // By hand, attenuation 64: B = 255 − 64 = 191; C = max(191 − 64, 160 − 64) = 127;
+    // D keeps its own 160 (> 127 − 64); E is isolated and keeps 40.
+    EXPECT_EQ(spreadLight(sectors, 64), (std::vector<int>{255, 191, 127, 160, 40}));
+    // Attenuation 255: nothing spreads.
+    EXPECT_EQ(spreadLight(sectors, 255), (std::vector<int>{255, 0, 0, 160, 40}));
+    // Corners only (diagonal neighbours) do not count as adjacent.
+    EXPECT_TRUE(adjacentSectors({{{0, 0}, {10, 10}, 0}, {{10, 10}, {20, 20}, 0}}).empty());
+}
+
+TEST(DoomLighting, LightDiminishesWithDistance)
+{
+    // Light 160: startmap = (15 − 10) · 4 = 20; at distance 0 the scale 160 makes it full bright.
+    EXPECT_EQ(colormapIndex(160, 0.0), 0);
+    EXPECT_EQ(colormapIndex(160, 16.0 * 9), 20 - 160 / 10 / 2); // z = 9: scale 16, level 12
+    EXPECT_EQ(colormapIndex(160, 1e6), 20);                     // far: the sector's own level
+    EXPECT_EQ(colormapIndex(255, 1e6), 0);                      // full bright never dims
+    EXPECT_EQ(colormapIndex(0, 1e6), 31);                       // darkness is the darkest map
+    for (int light = 0; light <= 255; light += 15)
+        for (double d = 0.0; d < 2000.0; d += 50.0) EXPECT_LE(colormapIndex(light, d), colormapIndex(light, d + 50.0));
+}
+
+TEST(DoomLighting, ColormapOutputsOnlyPaletteColours)
+{
+    const auto palette = makePalette();
+    const auto colormap = makeColormap(palette);
+    ASSERT_EQ(colormap.size(), size_t(kColormaps));
+    // Level 0 is the identity (every palette colour is its own nearest), and every entry of
+    // every level is a palette index (uint8_t: 0–255 by construction) whose colour is no
+    // brighter than the undarkened one.
+    for (int i = 0; i < 256; ++i) EXPECT_EQ(palette[colormap[0][size_t(i)]], palette[size_t(i)]);
+    auto luma = [](const Rgb& c) { return 2 * c[0] + 5 * c[1] + c[2]; };
+    for (int level = 1; level < kColormaps; ++level)
+        for (int i = 0; i < 256; ++i) EXPECT_LE(luma(palette[colormap[size_t(level)][size_t(i)]]), luma(palette[size_t(i)]) + 8);
+    // The darkest level of white is a dark grey.
+    EXPECT_LT(luma(palette[colormap[31][nearestIndex(palette, {255, 255, 255})]]), 8 * 16);
+    // Quantising any colour gives a colour of the palette.
+    const std::set<Rgb> colours(palette.begin(), palette.end());
+    for (int r = 0; r < 256; r += 37)
+        for (int g = 0; g < 256; g += 41)
+            for (int b = 0; b < 256; b += 43)
+                EXPECT_TRUE(colours.count(palette[nearestIndex(palette, {uint8_t(r), uint8_t(g), uint8_t(b)})]));
+}
