@@ -7,6 +7,7 @@
 
 #include <epoxy/gl.h>
 
+#include "core/Error.h"
 #include "core/Log.h"
 #include "core/Timer.h"
 #include "gl/Debug.h"
@@ -238,6 +239,16 @@ struct Renderer::Impl {
     void ensureTargets(int w, int h, int samples)
     {
         if (w == width && h == height && samples == msaa) return;
+        if (samples > 1) {
+            // Asking for more samples than the implementation has is a GL error and an
+            // incomplete framebuffer: say so in one line instead (llvmpipe stops at 4).
+            GLint colorSamples = 0, depthSamples = 0;
+            glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &colorSamples);
+            glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &depthSamples);
+            const int supported = std::min(colorSamples, depthSamples);
+            if (samples > supported)
+                throw Error("{} MSAA samples asked for; this OpenGL implementation supports at most {}", samples, supported);
+        }
         // Deleted GL objects free their names and new ones may reuse them: the binding cache
         // must not mistake a new framebuffer for the old one it thinks is bound.
         state.reset();
@@ -438,7 +449,7 @@ void Renderer::prepare(const FrameSettings& requested)
     const FrameSettings settings = effectiveSettings(requested);
     if (r.scene)
         for (const MaterialBinding& m : r.scene->materials()) r.forwardProgram(settings, m.features);
-    const int samples = std::clamp(settings.msaa, 1, 16);
+    const int samples = std::max(settings.msaa, 1);
     const bool hdrPasses = settings.bloom.enabled || settings.autoExposure.enabled;
     r.tonemap(hdrPasses ? 1 : samples, settings.autoExposure.enabled, settings.fxaa.enabled);
     r.billboards.prepare();
@@ -484,7 +495,7 @@ void Renderer::render(const View& view, const FrameSettings& requested)
 {
     Impl& r = *mImpl;
     const FrameSettings settings = effectiveSettings(requested);
-    const int samples = std::clamp(settings.msaa, 1, 16);
+    const int samples = std::max(settings.msaa, 1);
     r.ensureTargets(std::max(settings.width, 1), std::max(settings.height, 1), samples);
     r.stats = {};
     r.timed.clear();

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/Error.h"
 #include "render/Renderer.h"
 #include "render/Tonemap.h"
 #include "scene/Procedural.h"
@@ -100,4 +101,20 @@ TEST_F(GlTest, MsaaOneSamplesPixelCentres)
     EXPECT_LT(multi[3], 0.95f);
     EXPECT_NEAR(multi[2], 1.0f, 1e-3f);
     EXPECT_NEAR(multi[4], 0.0f, 1e-3f);
+}
+
+TEST_F(GlTest, TooManyMsaaSamplesIsAClearError)
+{
+    render::Renderer renderer;
+    renderer.setScene(emissivePlane({1.0f, 1.0f, 1.0f}));
+    render::FrameSettings settings;
+    settings.width = settings.height = 8;
+    settings.msaa = 64; // beyond every implementation's GL_MAX_COLOR_TEXTURE_SAMPLES
+    const render::View view = render::lookAtView({0, 0, 2}, {0, 0, 0}, {0, 1, 0}, glm::radians(45.0f), 1.0f, 0.1f, 10.0f);
+    try {
+        renderer.render(view, settings);
+        FAIL() << "rendered with 64 samples";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("supports at most"), std::string::npos) << e.what();
+    }
 }
