@@ -16,19 +16,11 @@ scene::SceneDocument loadSceneOrBuiltin(const std::string& name)
         document.render.tonemap = "neutral";
         return document;
     }
-    if (name == "learnopengl-ibl") {
-        // The tutorial's IBL demo: Reinhard, Schlick-GGX (k = r^2/2 for the environment).
+    if (name == "learnopengl" || name == "learnopengl-ibl") {
+        // The tutorial's look: Reinhard, Schlick-GGX (k = r^2/2 for the environment), and for
+        // the lighting demo a constant ambient 0.03 x albedo (resolveSettings).
         scene::SceneDocument document;
-        document.scene = scene::makeLearnOpenGlIblScene();
-        document.render.tonemap = "reinhard";
-        document.render.brdfG = "schlick-ggx";
-        document.render.defaultLights = false;
-        return document;
-    }
-    if (name == "learnopengl") {
-        // The tutorial's look: Reinhard, Schlick-GGX, constant ambient 0.03 x albedo.
-        scene::SceneDocument document;
-        document.scene = scene::makeLearnOpenGlScene();
+        document.scene = name == "learnopengl" ? scene::makeLearnOpenGlScene() : scene::makeLearnOpenGlIblScene();
         document.render.tonemap = "reinhard";
         document.render.brdfG = "schlick-ggx";
         document.render.defaultLights = false;
