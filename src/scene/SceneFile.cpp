@@ -208,6 +208,16 @@ public:
             out.emplace_back(mFile, at(key)[i], fmt::format("{}[{}]", path(key), i), keys);
         return out;
     }
+    /// The members of an object whose keys are names (not a fixed set), each an object with `keys`.
+    std::vector<std::pair<std::string, Object>> members(std::string_view key, const std::vector<std::string_view>& keys) const
+    {
+        std::vector<std::pair<std::string, Object>> out;
+        if (!has(key)) return out;
+        if (!at(key).is_object()) fail(key, "must be an object");
+        for (const auto& [name, value] : at(key).items())
+            out.emplace_back(name, Object(mFile, value, fmt::format("{}.{}", path(key), name), keys));
+        return out;
+    }
     /// Rejects `key` where it has no meaning (a cone angle on a point light).
     void onlyFor(std::string_view key, bool applies, std::string_view what) const
     {
@@ -298,9 +308,16 @@ Material defaultShapeMaterial(const std::string& name)
     return material;
 }
 
-Material parseMaterial(const Object& object, const std::string& name)
+/// The keys of a material object; a model's material overrides take all but "name".
+const std::vector<std::string_view> kMaterialKeys = {"name", "baseColor", "metallic", "roughness", "emissive",
+                                                     "emissiveStrength", "doubleSided", "alphaMode", "alphaCutoff",
+                                                     "shading", "brdfD", "brdfG", "brdfF", "brdfDiffuse", "ior",
+                                                     "shininess", "sectorLight"};
+
+/// Sets the material's fields that `object` gives; the others keep their values (a shape's
+/// defaults, or a glTF model's material with its textures).
+void applyMaterialKeys(const Object& object, Material& material)
 {
-    Material material = defaultShapeMaterial(object.string("name").value_or(name));
     if (const auto base = object.numbers("baseColor", {3, 4}); !base.empty()) {
         if (std::any_of(base.begin(), base.end(), [](float v) { return !(v >= 0.0f && v <= 1.0f); }))
             object.fail("baseColor", "components must be between 0 and 1");
@@ -311,8 +328,8 @@ Material parseMaterial(const Object& object, const std::string& name)
     material.emissiveFactor = object.color("emissive").value_or(material.emissiveFactor);
     material.emissiveStrength = object.nonNegative("emissiveStrength").value_or(material.emissiveStrength);
     material.doubleSided = object.boolean("doubleSided").value_or(material.doubleSided);
-    const std::string alphaMode = object.choice("alphaMode", {"opaque", "mask", "blend"}).value_or("opaque");
-    material.alphaMode = alphaMode == "mask" ? AlphaMode::Mask : alphaMode == "blend" ? AlphaMode::Blend : AlphaMode::Opaque;
+    if (const auto alphaMode = object.choice("alphaMode", {"opaque", "mask", "blend"}))
+        material.alphaMode = *alphaMode == "mask" ? AlphaMode::Mask : *alphaMode == "blend" ? AlphaMode::Blend : AlphaMode::Opaque;
     object.onlyFor("alphaCutoff", material.alphaMode == AlphaMode::Mask, "alphaMode \"mask\"");
     material.alphaCutoff = object.nonNegative("alphaCutoff").value_or(material.alphaCutoff);
     // Material system (docs/scene-format.md): shading model, BRDF terms, F0 from an IOR, Phong exponent.
@@ -330,7 +347,46 @@ Material parseMaterial(const Object& object, const std::string& name)
     }
     material.shininess = object.nonNegative("shininess").value_or(material.shininess);
     material.sectorLight = object.integer("sectorLight", 0, 255).value_or(material.sectorLight);
+}
+
+Material parseMaterial(const Object& object, const std::string& name)
+{
+    Material material = defaultShapeMaterial(object.string("name").value_or(name));
+    applyMaterialKeys(object, material);
     return material;
+}
+
+/// A model's "materials": {"<material name>" | "#<index>" | "*": {material keys but "name"}}.
+/// "*" applies to every material of the model first, then each named one; a name the model
+/// does not have is an error that lists the names it has.
+void applyModelMaterials(const Object& object, Scene& model)
+{
+    const std::vector<std::string_view> keys(kMaterialKeys.begin() + 1, kMaterialKeys.end());
+    const auto overrides = object.members("materials", keys);
+    for (const auto& [name, material] : overrides)
+        if (name == "*")
+            for (Material& target : model.materials) applyMaterialKeys(material, target);
+    for (const auto& [name, material] : overrides) {
+        if (name == "*") continue;
+        int index = -1;
+        if (name.size() > 1 && name[0] == '#' && std::all_of(name.begin() + 1, name.end(), [](unsigned char c) { return std::isdigit(c) != 0; })) {
+            index = std::atoi(name.c_str() + 1);
+            if (index >= int(model.materials.size()))
+                object.fail("materials", fmt::format("has '{}', but the model has {} materials", name, model.materials.size()));
+        } else {
+            const auto it = std::find_if(model.materials.begin(), model.materials.end(),
+                                         [&](const Material& m) { return m.name == name; });
+            if (it == model.materials.end()) {
+                std::string names;
+                for (size_t i = 0; i < model.materials.size(); ++i)
+                    names += fmt::format("{}'{}'", i ? ", " : "", model.materials[i].name.empty() ? fmt::format("#{}", i) : model.materials[i].name);
+                object.fail("materials", fmt::format("has '{}', but the model's materials are {}", name,
+                                                     names.empty() ? "none" : names));
+            }
+            index = int(it - model.materials.begin());
+        }
+        applyMaterialKeys(material, model.materials[size_t(index)]);
+    }
 }
 
 void parseShape(const Object& object, Scene& scene, size_t index)
@@ -359,10 +415,7 @@ void parseShape(const Object& object, Scene& scene, size_t index)
     }
     const std::string name = object.string("name").value_or(fmt::format("{}{}", type, index));
     Material material = defaultShapeMaterial(name);
-    if (const auto materialObject = object.object("material", {"name", "baseColor", "metallic", "roughness", "emissive",
-                                                               "emissiveStrength", "doubleSided", "alphaMode",
-                                                               "alphaCutoff", "shading", "brdfD", "brdfG", "brdfF",
-                                                               "brdfDiffuse", "ior", "shininess", "sectorLight"}))
+    if (const auto materialObject = object.object("material", kMaterialKeys))
         material = parseMaterial(*materialObject, name);
     addShape(scene, std::move(primitive), material, parseTransform(object), name);
 }
@@ -382,6 +435,7 @@ void parseModel(const Object& object, Scene& scene, const fs::path& directory)
         object.fail(object.where() + ": " + e.what());
     }
     if (const auto name = object.string("name")) model.name = *name;
+    applyModelMaterials(object, model);
     scene.append(std::move(model), transform);
 }
 
@@ -772,7 +826,7 @@ SceneDocument loadSceneFile(const fs::path& path)
     Scene& scene = document.scene;
     scene.name = path.stem().string();
 
-    for (const Object& model : root.objects("models", withTransform({"path", "name"}))) parseModel(model, scene, directory);
+    for (const Object& model : root.objects("models", withTransform({"path", "name", "materials"}))) parseModel(model, scene, directory);
     const auto shapes = root.objects("shapes", withTransform({"type", "name", "radius", "segments", "rings", "halfExtent",
                                                               "size", "uvRepeat", "material"}));
     for (size_t i = 0; i < shapes.size(); ++i) parseShape(shapes[i], scene, i);

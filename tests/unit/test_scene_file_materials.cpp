@@ -68,3 +68,52 @@ TEST(SceneFileMaterials, BadNamesAreErrors)
     EXPECT_NE(error(R"({"ior": 0.5})").find("ior"), std::string::npos);
     EXPECT_NE(error(R"({"brdfd": "ggx"})").find("brdfd"), std::string::npos); // strict keys
 }
+
+// A model's materials keep their glTF parameters and textures; the scene file overrides the
+// keys it gives, for every material ("*") and then by name or "#index".
+TEST(SceneFileMaterials, ModelMaterialsByName)
+{
+    const std::string model = (fs::path(SPECULA_ASSETS_DIR) / "models/AlphaBlendModeTest/AlphaBlendModeTest.glb").string();
+    const SceneDocument plain = loadText(R"({"models": [{"path": ")" + model + R"("}]})");
+    const SceneDocument d = loadText(R"({"models": [{"path": ")" + model + R"(", "materials": {
+        "MatBlend": {"shading": "phong", "shininess": 32},
+        "#5": {"brdfD": "beckmann", "roughness": 0.25},
+        "*": {"shading": "gouraud", "brdfDiffuse": "burley"}}}]})");
+    ASSERT_EQ(d.scene.materials.size(), plain.scene.materials.size());
+    for (size_t i = 0; i < d.scene.materials.size(); ++i) {
+        const Material &m = d.scene.materials[i], &p = plain.scene.materials[i];
+        SCOPED_TRACE(m.name);
+        EXPECT_EQ(m.shading.diffuse, BrdfDiffuse::Burley); // "*"
+        EXPECT_EQ(m.baseColorTexture.image, p.baseColorTexture.image); // textures kept
+        EXPECT_EQ(m.alphaMode, p.alphaMode);
+        if (m.name == "MatBlend") {
+            EXPECT_EQ(m.shading.model, ShadingModel::Phong); // the name wins over "*"
+            EXPECT_FLOAT_EQ(m.shininess, 32.0f);
+        } else {
+            EXPECT_EQ(m.shading.model, ShadingModel::Gouraud);
+        }
+        if (i == 5) {
+            EXPECT_EQ(m.shading.distribution, BrdfDistribution::Beckmann);
+            EXPECT_FLOAT_EQ(m.roughnessFactor, 0.25f);
+        } else {
+            EXPECT_FALSE(m.shading.distribution);
+            EXPECT_FLOAT_EQ(m.roughnessFactor, p.roughnessFactor);
+        }
+    }
+
+    auto error = [&](const std::string& materials) {
+        try {
+            loadText(R"({"models": [{"path": ")" + model + R"(", "materials": )" + materials + "}]}");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string unknown = error(R"({"MatBlnd": {"shading": "phong"}})");
+    EXPECT_NE(unknown.find("'MatBlnd'"), std::string::npos) << unknown;
+    EXPECT_NE(unknown.find("'MatBlend'"), std::string::npos) << unknown; // lists the names it has
+    EXPECT_NE(error(R"({"#6": {}})").find("has 6 materials"), std::string::npos);
+    EXPECT_NE(error(R"({"*": {"name": "x"}})").find("unknown key 'name'"), std::string::npos);
+    EXPECT_NE(error(R"({"*": {"shading": "toon"}})").find("models[0].materials.*.shading"), std::string::npos);
+    EXPECT_NE(error(R"([1])").find("must be an object"), std::string::npos);
+}
