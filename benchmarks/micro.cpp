@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "render/EnvironmentMap.h"
+#include "scene/DoomPalette.h"
 #include "scene/GltfImporter.h"
 #include "scene/Procedural.h"
 #include "scene/Tangents.h"
@@ -56,5 +57,16 @@ static void BM_LoadHdrEnvironment(benchmark::State& state)
     for (auto _ : state) benchmark::DoNotOptimize(render::loadEnvironmentMap(path));
 }
 BENCHMARK(BM_LoadHdrEnvironment)->Unit(benchmark::kMillisecond);
+
+// The Doom model's nearest-index table (64³ cells, an exact search of 256 colours each), built
+// once per process by scene::doom::colorTables().
+static void BM_DoomNearestTable(benchmark::State& state)
+{
+    const scene::doom::Palette palette = scene::doom::makePalette();
+    for (auto _ : state) benchmark::DoNotOptimize(scene::doom::makeNearestTable(palette).data());
+    state.SetItemsProcessed(int64_t(state.iterations()) * scene::doom::kNearestCells * scene::doom::kNearestCells *
+                            scene::doom::kNearestCells);
+}
+BENCHMARK(BM_DoomNearestTable)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders the README's images with the program itself (docs/images/).
+# Renders the images of the README and docs/ with the program itself (docs/images/).
 set -euo pipefail
 BUILD="${1:-build}"
 SHARED="$(cd "$(dirname "$0")/.." && pwd)/../shared/assets"
@@ -26,3 +26,9 @@ $S --debug-view ssao --width 480 --height 270 -o "$OUT/demo-ssao.png"
 $S --env none --debug-view bloom --width 480 --height 270 -o "$OUT/demo-bloom.png"
 $S "$SHARED/models/DamagedHelmet/DamagedHelmet.glb" --env "$SHARED/env/venice_1k.hdr" --bloom on --ssao on --width 480 --height 360 -o "$OUT/DamagedHelmet-post.png"
 $S "$SHARED/models/DamagedHelmet/DamagedHelmet.glb" --debug-view ssao --width 480 --height 360 -o "$OUT/DamagedHelmet-ssao.png"
+# The shading-model galleries (docs/materials.md) and the Doom-era demo level.
+G="$BUILD/specula gallery"
+$G demo --width 360 --height 240 --columns 4 -o "$OUT/gallery-demo.png"
+$G "$SHARED/models/DamagedHelmet/DamagedHelmet.glb" --width 300 --height 300 --columns 4 -o "$OUT/gallery-DamagedHelmet.png"
+$G doom --env none --width 320 --height 200 --columns 4 -o "$OUT/gallery-doom.png"
+$S doom --width 640 --height 400 -o "$OUT/doom.png"

@@ -40,7 +40,10 @@ int runGallery(const GalleryArgs& args)
     if (!options.height) options.height = 320;
     const render::FrameSettings base = resolveSettings(document, options);
     const std::optional<render::EnvironmentMap> environment = loadEnvironment(document, options);
-    const render::View view = prepareView(document, options, base, nullptr, environment.has_value());
+    // A scene without lights gets the default rig even under an environment (which `render`
+    // would light it with alone): the classic models take no specular light from an
+    // environment, and without a light their tiles would all show the same ambient term.
+    const render::View view = prepareView(document, options, base, nullptr, /*hasEnvironment=*/false);
 
     auto context = platform::Context::createHeadless();
     gl::DebugMonitor debug;

@@ -47,9 +47,17 @@ int runRender(const RenderArgs& args)
     } else {
         writeExr(output, renderer.readRadiance());
     }
-    log::info("first frame {:.0f} ms after start; wrote {} ({}x{}, {} sample{}, {} tone mapping)", firstFrameMs,
-              output.string(), settings.width, settings.height, settings.msaa, settings.msaa == 1 ? "" : "s",
-              render::tonemapName(settings.tonemap));
+    // A Doom frame renders one sample a pixel, with no tone curve, whatever was asked for.
+    const bool doomFrame =
+        settings.materialOverride.model == scene::ShadingModel::Doom && settings.debugView == render::DebugView::None;
+    const int samples = doomFrame ? 1 : settings.msaa;
+    if (doomFrame)
+        log::info("first frame {:.0f} ms after start; wrote {} ({}x{}, Doom's 8-bit frame: palette colours only)", firstFrameMs,
+                  output.string(), settings.width, settings.height);
+    else
+        log::info("first frame {:.0f} ms after start; wrote {} ({}x{}, {} sample{}, {} tone mapping)", firstFrameMs,
+                  output.string(), settings.width, settings.height, settings.msaa, settings.msaa == 1 ? "" : "s",
+                  render::tonemapName(settings.tonemap));
     if (args.stats) {
         // After the written frame, so its start-up figure is unchanged; the first timed frame
         // would include shader compilation, so one untimed frame goes first.
@@ -62,7 +70,7 @@ int runRender(const RenderArgs& args)
             times.add(renderer.stats());
         }
         printPassTable(fmt::format("Time per pass, median of {} frames ({}x{}, {} sample{}):", kStatsFrames, settings.width,
-                                   settings.height, settings.msaa, settings.msaa == 1 ? "" : "s"),
+                                   settings.height, samples, samples == 1 ? "" : "s"),
                        times.medians());
     }
     if (debug.errorCount() > 0) {

@@ -4,7 +4,7 @@
 
 #include "core/Error.h"
 #include "scene/DemoScenes.h"
-#include "scene/DoomLighting.h"
+#include "scene/DoomLevel.h"
 
 namespace specula::cli {
 
@@ -27,11 +27,13 @@ scene::SceneDocument loadSceneOrBuiltin(const std::string& name)
         return document;
     }
     if (name == "doom") {
-        // The Doom-era demo level (scene/DoomLighting.h): its materials use the Doom model,
-        // which needs no lights and no environment.
+        // The Doom-era demo level (scene/DoomLevel.h): its materials use the Doom model, and
+        // its frame is Doom's 8-bit frame (render/DoomPass) unless --shading says otherwise.
+        // Its lamps hold point lights for the other models; it needs no default rig.
         scene::SceneDocument document;
         document.scene = scene::doom::makeDemoLevel();
         document.render.defaultLights = false;
+        document.render.shading = "doom";
         return document;
     }
     return scene::loadScene(name);
@@ -49,10 +51,12 @@ std::optional<T> parseOption(const std::optional<std::string>& value, const char
 }
 
 /// --shading and --brdf-*: every material's choice for this frame; --debug-view.
-void applyMaterialOverrides(const FrameOptions& options, render::FrameSettings& s)
+void applyMaterialOverrides(const scene::SceneDocument& document, const FrameOptions& options, render::FrameSettings& s)
 {
     scene::MaterialShading& o = s.materialOverride;
-    o.model = parseOption<scene::ShadingModel>(options.shading, "--shading", scene::parseShadingModel, scene::shadingModelNames());
+    // The command line's --shading, else the scene's render.shading.
+    o.model = parseOption<scene::ShadingModel>(options.shading ? options.shading : document.render.shading, "--shading",
+                                               scene::parseShadingModel, scene::shadingModelNames());
     o.distribution = parseOption<scene::BrdfDistribution>(options.brdfD, "--brdf-d", scene::parseBrdfDistribution,
                                                           scene::brdfDistributionNames());
     o.geometry = parseOption<scene::BrdfGeometry>(options.brdfG, "--brdf-g", scene::parseBrdfGeometryName, scene::brdfGeometryNames());
@@ -89,7 +93,7 @@ render::FrameSettings resolveSettings(const scene::SceneDocument& document, cons
     const auto geometry = render::parseBrdfGeometry(g);
     if (!geometry) throw Error("unknown --brdf-g '{}' ({})", g, scene::brdfGeometryNames());
     s.brdfGeometry = *geometry;
-    applyMaterialOverrides(options, s);
+    applyMaterialOverrides(document, options, s);
     s.gizmos = options.gizmos;
     if (options.energyCompensation) {
         if (*options.energyCompensation != "on" && *options.energyCompensation != "off")
@@ -141,7 +145,9 @@ std::optional<render::EnvironmentMap> loadEnvironment(const scene::SceneDocument
     }
     if (!document.environment.file.empty()) return render::loadEnvironmentMap(document.environment.file);
     if (document.environment.color) return render::constantEnvironment(*document.environment.color);
-    if (document.scene.name == "learnopengl") return std::nullopt;
+    // The lighting tutorial has no environment, and the Doom level is indoors: a sky would
+    // light its rooms through their walls under the image-based models.
+    if (document.scene.name == "learnopengl" || document.scene.name == "doom") return std::nullopt;
     return render::proceduralSky();
 }
 

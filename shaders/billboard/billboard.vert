@@ -6,6 +6,9 @@
 #include "../shared/FrameData.h"
 #include "../shared/BillboardData.h"
 #include "basis.glsl"
+#if defined(DOOM_INDEXED)
+#include "../doom/light.glsl"
+#endif
 
 layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
 layout(std430, binding = SPECULA_BINDING_BILLBOARDS) readonly buffer BillboardBuffer { GpuBillboard billboards[]; };
@@ -19,6 +22,11 @@ uniform float uViewportHeight;
 
 out vec2 vUv;
 out vec3 vTint;
+#if defined(DOOM_INDEXED)
+// A Doom frame: one colour-map level for the whole sprite, from its sector's light and its
+// distance, as Doom lit its things (r_things.c: one colormap per vissprite).
+flat out uint vDoomLevel;
+#endif
 
 // Two counter-clockwise triangles seen from +Z (the camera side).
 const vec2 kCorners[6] = vec2[](vec2(0, 0), vec2(1, 0), vec2(1, 1), vec2(0, 0), vec2(1, 1), vec2(0, 1));
@@ -49,5 +57,8 @@ void main()
     mat4 model = mat4(vec4(basis[0], 0.0), vec4(basis[1], 0.0), vec4(basis[2], 0.0), vec4(position, 1.0));
     vUv = uv;
     vTint = b.tint.rgb;
+#if defined(DOOM_INDEXED)
+    vDoomLevel = doomLevel(b.tint.w * 255.0, length(position - camera));
+#endif
     gl_Position = frame.projection * (frame.view * (model * vec4(local, 0.0, 1.0)));
 }

@@ -2,8 +2,10 @@
 // Forward pass: glTF metal-rough material lit by punctual lights. This file only
 // orchestrates; the BRDF lives in brdf/, light falloff in lights/.
 // Material features are compile-time variants (see Renderer's variant key): HAS_*_TEXTURE,
-// VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND, DOUBLE_SIDED; per frame, SSAO. A material without a feature pays
-// nothing for it; without ALPHA_MASK there is no discard, so early depth testing stays on.
+// VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND, DOUBLE_SIDED; per frame, SSAO, and DOOM_INDEXED (a
+// Doom frame: with SHADING_DOOM, the output is a palette index and a colour-map level, not a
+// colour; render/DoomPass). A material without a feature pays nothing for it; without
+// ALPHA_MASK there is no discard, so early depth testing stays on.
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
 #include "../shared/MaterialData.h"
@@ -36,7 +38,11 @@ in vec2 vUv0;
 in vec2 vUv1;
 in vec4 vColor;
 
+#if defined(DOOM_INDEXED)
+layout(location = 0) out uvec4 outIndexed; // palette index, colour-map level (an RG8UI target)
+#else
 layout(location = 0) out vec4 outColor;
+#endif
 
 // Filament's MIN_PERCEPTUAL_ROUGHNESS: below it D_GGX of a punctual light is a spike that
 // neither half floats nor a single pixel can hold.
@@ -120,12 +126,15 @@ void main()
 #if defined(DEBUG_VIEW)
     // One input or BRDF term instead of the frame (debug_views.glsl).
     outColor = vec4(debugViewValue(baseColor.rgb, metallic, perceptualRoughness, n, v, occlusion, materialEmissive()), 1.0);
-    return;
+#elif defined(DOOM_INDEXED)
+    // Doom's 8-bit frame (doom.glsl; the colour-map pass makes the colours). An index cannot
+    // be blended: a blended material is cut out at half coverage instead.
+    if (alpha < 0.5) discard;
+    outIndexed = uvec4(doomIndexLevel(baseColor.rgb), 0u, 0u);
 #elif defined(SHADING_CLASSIC)
     // The models before physically based shading (shading_models.glsl): no BRDF, no split sum.
     outColor = vec4(min(shadeClassic(baseColor.rgb, metallic, perceptualRoughness, n, v, occlusion, materialEmissive()), vec3(kHalfMax)), alpha);
-    return;
-#endif
+#else
 
     SurfaceBrdf surface = makeSurfaceBrdf(baseColor.rgb, metallic, perceptualRoughness, material.specular);
 
@@ -176,4 +185,5 @@ void main()
     color += materialEmissive();
 
     outColor = vec4(min(color, vec3(kHalfMax)), alpha);
+#endif
 }

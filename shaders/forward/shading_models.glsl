@@ -23,7 +23,7 @@ vec3 shadeClassic(vec3 baseColor, float metallic, float perceptualRoughness, vec
     return baseColor + emissive;
 #elif defined(SHADING_DOOM)
     // No lights, no emission: the sector's light level and the distance (doom.glsl).
-    return shadeDoom(baseColor, material.emissive.w * 255.0, length(frame.cameraPosition.xyz - vWorldPosition));
+    return shadeDoom(baseColor);
 #else
     vec3 kd = baseColor * (1.0 - metallic);
     vec3 ks = mix(material.phong.rgb, baseColor, metallic);

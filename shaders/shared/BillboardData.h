@@ -14,7 +14,7 @@ SPECULA_SHARED_BEGIN
 
 struct GpuBillboard {
     vec4 positionScale; // xyz world position (metres), w multiplies the group's size
-    vec4 tint;          // rgb radiance of a white texel, cd/m² (group tint x billboard tint), w unused
+    vec4 tint;          // rgb radiance of a white texel, cd/m² (group tint x billboard tint), w the group's Doom sector light / 255
     vec4 axis;          // xyz the axis an arbitrary-axis billboard turns about, w unused
 };
 

@@ -32,6 +32,11 @@
 #define SPECULA_BINDING_EXPOSURE_PARAMS 6 // uniform buffer: ExposureParams
 #define SPECULA_BINDING_EXPOSURE 7       // storage buffer: ExposureState
 #define SPECULA_BINDING_HISTOGRAM 8      // storage buffer: luminance histogram
+// The Doom model's colour tables (render/DoomPass, shaders/doom/palette.glsl): forward,
+// billboard and colour-map passes
+#define SPECULA_UNIT_DOOM_NEAREST 13     // nearest-index table, 3D R8UI
+#define SPECULA_UNIT_DOOM_COLORMAP 14    // colour map, 256 x 32 R8UI
+#define SPECULA_UNIT_DOOM_PALETTE 15     // palette, 256 x 1 RGBA8 (sRGB bytes)
 
 // Vertex attribute locations
 #define SPECULA_ATTRIB_POSITION 0

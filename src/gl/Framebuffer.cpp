@@ -88,6 +88,12 @@ void Framebuffer::clearColor(int index, float r, float g, float b, float a)
     glClearNamedFramebufferfv(id(), GL_COLOR, index, value);
 }
 
+void Framebuffer::clearColorUint(int index, uint32_t r, uint32_t g, uint32_t b, uint32_t a)
+{
+    const GLuint value[4] = {r, g, b, a};
+    glClearNamedFramebufferuiv(id(), GL_COLOR, index, value);
+}
+
 void Framebuffer::clearDepth(float depth)
 {
     glClearNamedFramebufferfv(id(), GL_DEPTH, 0, &depth);

@@ -27,6 +27,8 @@ public:
     void check();
 
     void clearColor(int index, float r, float g, float b, float a);
+    /// Clears an unsigned-integer colour attachment (clearColor's floats are undefined there).
+    void clearColorUint(int index, uint32_t r, uint32_t g, uint32_t b, uint32_t a);
     void clearDepth(float depth = 1.0f);
     /// Copies colour attachment 0 into `target`'s (resolving multisampling), nearest filter.
     void blitColorTo(const Framebuffer& target, int width, int height) const;

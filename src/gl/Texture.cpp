@@ -19,6 +19,8 @@ GLenum glInternalFormat(Format format)
     case Format::RG8: return GL_RG8;
     case Format::RGBA8: return GL_RGBA8;
     case Format::SRGB8_ALPHA8: return GL_SRGB8_ALPHA8;
+    case Format::R8UI: return GL_R8UI;
+    case Format::RG8UI: return GL_RG8UI;
     case Format::R16F: return GL_R16F;
     case Format::RG16F: return GL_RG16F;
     case Format::RGBA16F: return GL_RGBA16F;
@@ -39,17 +41,18 @@ GLenum glTarget(TextureType type)
     case TextureType::Texture2DArray: return GL_TEXTURE_2D_ARRAY;
     case TextureType::Cube: return GL_TEXTURE_CUBE_MAP;
     case TextureType::Texture2DMultisample: return GL_TEXTURE_2D_MULTISAMPLE;
+    case TextureType::Texture3D: return GL_TEXTURE_3D;
     }
     return GL_TEXTURE_2D;
 }
 
-GLenum channelFormat(int channels)
+GLenum channelFormat(int channels, bool integer = false)
 {
     switch (channels) {
-    case 1: return GL_RED;
-    case 2: return GL_RG;
-    case 3: return GL_RGB;
-    default: return GL_RGBA;
+    case 1: return integer ? GL_RED_INTEGER : GL_RED;
+    case 2: return integer ? GL_RG_INTEGER : GL_RG;
+    case 3: return integer ? GL_RGB_INTEGER : GL_RGB;
+    default: return integer ? GL_RGBA_INTEGER : GL_RGBA;
     }
 }
 
@@ -121,6 +124,7 @@ Texture::Texture(const TextureDesc& desc) : mDesc(desc)
         glTextureStorage2D(id, mDesc.levels, format, desc.width, desc.height);
         break;
     case TextureType::Texture2DArray:
+    case TextureType::Texture3D:
         glTextureStorage3D(id, mDesc.levels, format, desc.width, desc.height, desc.layers);
         break;
     case TextureType::Texture2DMultisample:
@@ -130,8 +134,12 @@ Texture::Texture(const TextureDesc& desc) : mDesc(desc)
     }
     if (desc.type != TextureType::Texture2DMultisample) {
         glTextureParameteri(id, GL_TEXTURE_MAX_LEVEL, mDesc.levels - 1);
-        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, mDesc.levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
-        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        // Integer textures with a linear filter are incomplete (GL 4.5, 8.17): fetches return 0.
+        const bool nearest = isInteger();
+        const GLenum minFilter = mDesc.levels > 1 ? (nearest ? GL_NEAREST_MIPMAP_NEAREST : GL_LINEAR_MIPMAP_LINEAR)
+                                                  : (nearest ? GL_NEAREST : GL_LINEAR);
+        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GLint(minFilter));
+        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, nearest ? GL_NEAREST : GL_LINEAR);
         glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         glTextureParameteri(id, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
@@ -154,17 +162,35 @@ bool Texture::isDepth() const
     return mDesc.format == Format::Depth24 || mDesc.format == Format::Depth32F || mDesc.format == Format::Depth24Stencil8;
 }
 
+size_t Texture::planes(int level) const
+{
+    switch (mDesc.type) {
+    case TextureType::Cube: return 6;
+    case TextureType::Texture2DArray: return size_t(mDesc.layers);
+    case TextureType::Texture3D: return size_t(std::max(1, mDesc.layers >> level));
+    default: return 1;
+    }
+}
+
+bool Texture::isInteger() const
+{
+    return mDesc.format == Format::R8UI || mDesc.format == Format::RG8UI;
+}
+
 void Texture::upload(int level, int layer, int channels, PixelType type, const void* pixels)
 {
     assert(level < mDesc.levels);
     const GLuint id = mHandle.get();
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    const GLenum channelsFormat = channelFormat(channels, isInteger());
     if (mDesc.type == TextureType::Texture2D) {
-        glTextureSubImage2D(id, level, 0, 0, width(level), height(level), channelFormat(channels), glPixelType(type), pixels);
+        glTextureSubImage2D(id, level, 0, 0, width(level), height(level), channelsFormat, glPixelType(type), pixels);
+    } else if (mDesc.type == TextureType::Texture3D) {
+        glTextureSubImage3D(id, level, 0, 0, 0, width(level), height(level), std::max(1, mDesc.layers >> level), channelsFormat,
+                            glPixelType(type), pixels);
     } else {
         // Cube faces are addressed as layers 0..5 with DSA.
-        glTextureSubImage3D(id, level, 0, 0, layer, width(level), height(level), 1, channelFormat(channels),
-                            glPixelType(type), pixels);
+        glTextureSubImage3D(id, level, 0, 0, layer, width(level), height(level), 1, channelsFormat, glPixelType(type), pixels);
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
 }
@@ -182,7 +208,7 @@ void Texture::generateMipmaps()
 
 std::vector<float> Texture::readFloat(int level, int channels) const
 {
-    std::vector<float> pixels(size_t(width(level)) * height(level) * channels * (mDesc.type == TextureType::Cube ? 6 : 1));
+    std::vector<float> pixels(size_t(width(level)) * height(level) * channels * planes(level));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     if (isDepth()) {
         glGetTextureImage(mHandle.get(), level, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
@@ -196,9 +222,10 @@ std::vector<float> Texture::readFloat(int level, int channels) const
 
 std::vector<uint8_t> Texture::readBytes(int level, int channels) const
 {
-    std::vector<uint8_t> pixels(size_t(width(level)) * height(level) * channels * (mDesc.type == TextureType::Cube ? 6 : 1));
+    std::vector<uint8_t> pixels(size_t(width(level)) * height(level) * channels * planes(level));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(mHandle.get(), level, channelFormat(channels), GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
+    glGetTextureImage(mHandle.get(), level, channelFormat(channels, isInteger()), GL_UNSIGNED_BYTE, GLsizei(pixels.size()),
+                      pixels.data());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     return pixels;
 }

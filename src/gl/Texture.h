@@ -13,10 +13,11 @@ namespace detail {
 void deleteTexture(uint32_t id);
 }
 
-enum class TextureType { Texture2D, Texture2DArray, Cube, Texture2DMultisample };
+enum class TextureType { Texture2D, Texture2DArray, Cube, Texture2DMultisample, Texture3D };
 
 enum class Format {
     R8, RG8, RGBA8, SRGB8_ALPHA8,
+    R8UI, RG8UI, ///< unsigned integers: read with usampler and texelFetch, never filtered
     R16F, RG16F, RGBA16F,
     R32F, RG32F, RGBA32F,
     Depth24, Depth32F, Depth24Stencil8,
@@ -33,7 +34,7 @@ struct TextureDesc {
     Format format = Format::RGBA8;
     int width = 1;
     int height = 1;
-    int layers = 1;  ///< array layers (Texture2DArray)
+    int layers = 1;  ///< array layers (Texture2DArray), depth (Texture3D)
     int levels = 1;  ///< mip levels; 0 = full chain down to 1x1
     int samples = 1; ///< Texture2DMultisample only
     std::string label;
@@ -44,13 +45,15 @@ public:
     Texture() = default;
     explicit Texture(const TextureDesc& desc);
 
-    /// Uploads a whole level of one layer (or cube face, 0..5 = +X,-X,+Y,-Y,+Z,-Z).
-    /// `channels` is 1..4; rows are tightly packed, first row at the bottom (GL convention).
+    /// Uploads a whole level of one layer (or cube face, 0..5 = +X,-X,+Y,-Y,+Z,-Z; a 3D
+    /// texture's whole volume, `layer` ignored). `channels` is 1..4; rows are tightly packed,
+    /// first row at the bottom (GL convention); integer formats take UnsignedByte.
     void upload(int level, int layer, int channels, PixelType type, const void* pixels);
     void generateMipmaps();
     /// Sets every texel of `level` to zero (glClearTexImage).
     void clear(int level = 0);
-    /// Reads a whole level of layer 0 back (stalls); size = levelWidth*levelHeight*channels.
+    /// Reads a whole level back (stalls): every face, layer or slice, one after the other;
+    /// size = levelWidth × levelHeight × channels × those.
     std::vector<float> readFloat(int level = 0, int channels = 4) const;
     std::vector<uint8_t> readBytes(int level = 0, int channels = 4) const;
 
@@ -61,10 +64,13 @@ public:
     int height(int level = 0) const;
     int levels() const { return mDesc.levels; }
     bool isDepth() const;
+    bool isInteger() const;
 
     static int fullMipChain(int width, int height);
 
 private:
+    size_t planes(int level) const; ///< faces, layers or slices of a level
+
     Handle<detail::deleteTexture> mHandle;
     TextureDesc mDesc;
 };

@@ -4,6 +4,8 @@
 #include <array>
 #include <map>
 #include <numeric>
+#include <string>
+#include <vector>
 
 #include "core/Log.h"
 #include "gl/Buffer.h"
@@ -32,6 +34,7 @@ scene::BillboardGroup makeLightGizmos(const std::vector<PlacedLight>& lights, co
     group.tint = glm::vec3(kGizmoRadiance);
     group.alphaMode = scene::AlphaMode::Blend;
     group.sprite = scene::BuiltinSprite::Disc;
+    group.sectorLight = 255; // they mark lights: full bright in Doom frames too
     const glm::vec3 center = sceneBounds.empty() ? glm::vec3(0.0f) : sceneBounds.center();
     const float radius = sceneBounds.empty() ? 1.0f : std::max(sceneBounds.radius(), 1e-3f);
     for (const PlacedLight& placed : lights) {
@@ -65,17 +68,24 @@ struct GroupState {
 
 shared::GpuBillboard pack(const scene::BillboardGroup& group, const scene::Billboard& b)
 {
-    return {glm::vec4(b.position, b.scale), glm::vec4(group.tint * b.tint, 0.0f), glm::vec4(b.axis, 0.0f)};
+    return {glm::vec4(b.position, b.scale), glm::vec4(group.tint * b.tint, float(std::clamp(group.sectorLight, 0, 255)) / 255.0f),
+            glm::vec4(b.axis, 0.0f)};
 }
 
 } // namespace
 
 struct BillboardPass::Impl {
-    gl::Program program;
-    int uFirstInstance = -1, uKind = -1, uSize = -1, uAnchor = -1, uSizeInPixels = -1, uViewportHeight = -1,
-        uAlphaCutoff = -1, uBlend = -1;
+    /// The program of one output (radiance, or a Doom frame's index and level) and its uniforms.
+    struct Variant {
+        gl::Program program;
+        int uFirstInstance = -1, uKind = -1, uSize = -1, uAnchor = -1, uSizeInPixels = -1, uViewportHeight = -1,
+            uAlphaCutoff = -1, uBlend = -1;
+    };
+    std::array<Variant, 2> variants; // [0] radiance, [1] DOOM_INDEXED
+    Variant* current = &variants[0];
     gl::VertexArray quad{"billboard quad"}; // vertices come from gl_VertexID; GL core still wants a VAO
     gl::Sampler sampler;
+    gl::Sampler nearestSampler; // Doom frames: texels as they are, as Doom drew sprites
     std::array<gl::Texture, 2> builtins; // by scene::BuiltinSprite
     std::map<int, gl::Texture> images;   // by scene image index
 
@@ -97,22 +107,29 @@ struct BillboardPass::Impl {
         // Clamp: a sprite is one picture, and repeating would bleed the opposite edge into it.
         desc.wrapS = desc.wrapT = gl::Wrap::ClampToEdge;
         sampler = gl::Sampler(desc, "billboard sprite");
+        desc.minFilter = desc.magFilter = gl::Filter::Nearest;
+        desc.mipFilter = gl::MipFilter::Nearest;
+        nearestSampler = gl::Sampler(desc, "billboard sprite (nearest)");
     }
 
-    gl::Program& ensureProgram()
+    Variant& ensureProgram(bool doomIndexed)
     {
-        if (!program) {
-            program = gl::Program({.vertex = "billboard/billboard.vert", .fragment = "billboard/billboard.frag", .label = "billboards"});
-            uFirstInstance = program.uniformLocation("uFirstInstance");
-            uKind = program.uniformLocation("uKind");
-            uSize = program.uniformLocation("uSize");
-            uAnchor = program.uniformLocation("uAnchor");
-            uSizeInPixels = program.uniformLocation("uSizeInPixels");
-            uViewportHeight = program.uniformLocation("uViewportHeight");
-            uAlphaCutoff = program.uniformLocation("uAlphaCutoff");
-            uBlend = program.uniformLocation("uBlend");
+        Variant& v = variants[doomIndexed ? 1 : 0];
+        if (!v.program) {
+            std::vector<std::string> defines;
+            if (doomIndexed) defines.push_back("DOOM_INDEXED");
+            v.program = gl::Program({.vertex = "billboard/billboard.vert", .fragment = "billboard/billboard.frag", .defines = defines,
+                                     .label = doomIndexed ? "billboards (doom)" : "billboards"});
+            v.uFirstInstance = v.program.uniformLocation("uFirstInstance");
+            v.uKind = v.program.uniformLocation("uKind");
+            v.uSize = v.program.uniformLocation("uSize");
+            v.uAnchor = v.program.uniformLocation("uAnchor");
+            v.uSizeInPixels = v.program.uniformLocation("uSizeInPixels");
+            v.uViewportHeight = v.program.uniformLocation("uViewportHeight");
+            v.uAlphaCutoff = v.program.uniformLocation("uAlphaCutoff");
+            v.uBlend = v.program.uniformLocation("uBlend");
         }
-        return program;
+        return v;
     }
 
     static gl::Texture makeTexture(const scene::Image& image, const std::string& label)
@@ -174,21 +191,23 @@ struct BillboardPass::Impl {
 
     void setState(gl::State& state, const GroupState& g, int viewportHeight)
     {
+        Variant& v = *current;
         state.bindTexture(SPECULA_UNIT_SPRITE, *g.texture);
-        state.bindSampler(SPECULA_UNIT_SPRITE, &sampler);
-        program.set(uKind, uint32_t(g.kind));
-        program.set(uSize, g.size);
-        program.set(uAnchor, g.anchor);
-        program.set(uSizeInPixels, int(g.sizeInPixels));
-        program.set(uViewportHeight, float(viewportHeight));
+        state.bindSampler(SPECULA_UNIT_SPRITE, current == &variants[1] ? &nearestSampler : &sampler);
+        v.program.set(v.uKind, uint32_t(g.kind));
+        v.program.set(v.uSize, g.size);
+        v.program.set(v.uAnchor, g.anchor);
+        v.program.set(v.uSizeInPixels, int(g.sizeInPixels));
+        v.program.set(v.uViewportHeight, float(viewportHeight));
         // Only cutout discards; -1 keeps every texel (alpha is never negative).
-        program.set(uAlphaCutoff, g.alphaMode == scene::AlphaMode::Mask ? g.alphaCutoff : -1.0f);
-        program.set(uBlend, int(g.alphaMode == scene::AlphaMode::Blend));
+        v.program.set(v.uAlphaCutoff, g.alphaMode == scene::AlphaMode::Mask ? g.alphaCutoff : -1.0f);
+        v.program.set(v.uBlend, int(g.alphaMode == scene::AlphaMode::Blend));
     }
 
-    void begin(gl::State& state)
+    void begin(gl::State& state, bool doomIndexed)
     {
-        state.useProgram(ensureProgram());
+        current = &ensureProgram(doomIndexed);
+        state.useProgram(current->program);
         state.bindVertexArray(quad);
         gl::bindStorageBuffer(SPECULA_BINDING_BILLBOARDS, instances);
     }
@@ -216,7 +235,7 @@ struct BillboardPass::Impl {
             size_t end = start + 1;
             while (end < order.size() && groupOf[order[end]] == g) ++end;
             setState(state, *g, viewportHeight);
-            program.set(uFirstInstance, uint32_t(first + start));
+            current->program.set(current->uFirstInstance, uint32_t(first + start));
             state.drawTrianglesInstanced(6, uint32_t(end - start));
             triangles += 2 * (end - start);
             start = end;
@@ -228,9 +247,9 @@ struct BillboardPass::Impl {
 BillboardPass::BillboardPass() : mImpl(std::make_unique<Impl>()) {}
 BillboardPass::~BillboardPass() = default;
 
-void BillboardPass::prepare()
+void BillboardPass::prepare(bool doomIndexed)
 {
-    mImpl->ensureProgram();
+    mImpl->ensureProgram(doomIndexed);
 }
 
 void BillboardPass::setScene(const scene::Scene& scene)
@@ -267,39 +286,43 @@ void BillboardPass::setScene(const scene::Scene& scene)
     log::debug("billboards: {} groups, {} static and {} blended billboards", p.groups.size(), staticRecords.size(), p.blended.size());
 }
 
-size_t BillboardPass::drawOpaque(gl::State& state, int viewportHeight)
+size_t BillboardPass::drawOpaque(gl::State& state, int viewportHeight, bool doomIndexed)
 {
     Impl& p = *mImpl;
     const bool any = std::any_of(p.groups.begin(), p.groups.end(),
                                  [](const GroupState& g) { return g.alphaMode != scene::AlphaMode::Blend && g.count > 0; });
     if (!any) return 0;
     gl::DebugGroup debugGroup("billboards (opaque)");
-    p.begin(state);
+    p.begin(state, doomIndexed);
     // No culling: a sprite seen from behind (an arbitrary-axis one, or past the pole) still shows.
     state.apply({.cull = gl::CullMode::None});
     size_t triangles = 0;
     for (const GroupState& g : p.groups) {
         if (g.alphaMode == scene::AlphaMode::Blend || g.count == 0) continue;
         p.setState(state, g, viewportHeight);
-        p.program.set(p.uFirstInstance, g.first);
+        p.current->program.set(p.current->uFirstInstance, g.first);
         state.drawTrianglesInstanced(6, g.count);
         triangles += 2 * size_t(g.count);
     }
     return triangles;
 }
 
-size_t BillboardPass::drawBlended(gl::State& state, const View& view, int viewportHeight, const LightBuffer* gizmoLights)
+size_t BillboardPass::drawBlended(gl::State& state, const View& view, int viewportHeight, const LightBuffer* gizmoLights,
+                                  bool doomIndexed)
 {
     Impl& p = *mImpl;
     const bool gizmos = gizmoLights && gizmoLights->count() > 0;
     if (!p.instances || (p.blended.empty() && !gizmos)) return 0; // no scene yet, or nothing to draw
     gl::DebugGroup debugGroup("billboards (blended)");
-    p.begin(state);
+    p.begin(state, doomIndexed);
+    // A Doom frame's indices cannot be blended: the shader cuts these out at half coverage,
+    // so they are drawn, and depth-written, as cutouts.
+    const gl::BlendMode blend = doomIndexed ? gl::BlendMode::None : gl::BlendMode::Alpha;
     size_t triangles = 0;
     if (!p.blended.empty()) {
         std::vector<const GroupState*> groupOf(p.blended.size());
         for (size_t i = 0; i < groupOf.size(); ++i) groupOf[i] = &p.groups[p.blendedGroup[i]];
-        state.apply({.noDepthWrite = true, .cull = gl::CullMode::None, .blend = gl::BlendMode::Alpha});
+        state.apply({.noDepthWrite = !doomIndexed, .cull = gl::CullMode::None, .blend = blend});
         triangles += p.drawSorted(state, view, viewportHeight, p.blended, groupOf, 0);
     }
     if (gizmos) {
@@ -311,7 +334,7 @@ size_t BillboardPass::drawBlended(gl::State& state, const View& view, int viewpo
         for (const scene::Billboard& b : group.billboards) records.push_back(pack(group, b));
         const std::vector<const GroupState*> groupOf(records.size(), &p.gizmos);
         // Gizmos mark where lights are, so they show through walls and lamp shades: no depth test.
-        state.apply({.noDepthTest = true, .noDepthWrite = true, .cull = gl::CullMode::None, .blend = gl::BlendMode::Alpha});
+        state.apply({.noDepthTest = true, .noDepthWrite = true, .cull = gl::CullMode::None, .blend = blend});
         triangles += p.drawSorted(state, view, viewportHeight, records, groupOf, uint32_t(p.blended.size()));
     }
     return triangles;

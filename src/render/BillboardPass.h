@@ -12,6 +12,11 @@
 //      not written; then the light gizmos, on top of everything.
 // Blended billboards and blended glTF surfaces are sorted apart, so a blended sprite behind a
 // blended glTF surface is drawn over it; scenes mixing the two should keep them apart.
+//
+// In a Doom frame (render/DoomPass) both draws write a palette index and a colour-map level
+// instead of radiance: texel × tint through the palette's nearest-index table, one level per
+// sprite from its group's sector light and its distance, texels unfiltered; blended sprites
+// and gizmos are cut out at half coverage.
 #include <memory>
 #include <vector>
 
@@ -45,14 +50,16 @@ public:
 
     /// Uploads the scene's billboard groups, their sprites, and remembers its bounds (gizmos).
     void setScene(const scene::Scene& scene);
-    /// Compiles the program now rather than on first use.
-    void prepare();
+    /// Compiles the program (of a Doom frame's output, with `doomIndexed`) now rather than on first use.
+    void prepare(bool doomIndexed = false);
 
     /// Draws the cutout and opaque groups into the bound target; returns triangles submitted.
-    size_t drawOpaque(gl::State& state, int viewportHeight);
+    /// `doomIndexed`: the target is a Doom frame's index and level (DoomPass::target).
+    size_t drawOpaque(gl::State& state, int viewportHeight, bool doomIndexed = false);
     /// Draws the blended billboards back to front, then the gizmos of `gizmoLights` (if not
     /// null) on top; returns triangles submitted.
-    size_t drawBlended(gl::State& state, const View& view, int viewportHeight, const LightBuffer* gizmoLights);
+    size_t drawBlended(gl::State& state, const View& view, int viewportHeight, const LightBuffer* gizmoLights,
+                       bool doomIndexed = false);
 
 private:
     struct Impl;

@@ -20,6 +20,7 @@
 #include "gl/VertexArray.h"
 #include "render/BillboardPass.h"
 #include "render/BloomPass.h"
+#include "render/DoomPass.h"
 #include "render/ExposurePass.h"
 #include "render/Frustum.h"
 #include "render/FxaaPass.h"
@@ -79,6 +80,13 @@ const char* debugViewDefine(DebugView view)
     }
 }
 
+/// A Doom frame (the override is the Doom model, and no material or BRDF view replaces it):
+/// forward and billboard passes write palette indices and levels, the colour-map pass colours.
+bool doomFrame(const FrameSettings& s)
+{
+    return s.materialOverride.model == scene::ShadingModel::Doom && !debugViewDefine(s.debugView);
+}
+
 /// What a frame actually runs: a debug view needs its pass on.
 FrameSettings effectiveSettings(const FrameSettings& requested)
 {
@@ -131,6 +139,8 @@ struct Renderer::Impl {
     std::unique_ptr<BloomPass> bloom;
     std::unique_ptr<ExposurePass> autoExposure;
     std::unique_ptr<FxaaPass> fxaa;
+    std::unique_ptr<DoomPass> doom; ///< the colour tables and a Doom frame's targets, made on first use
+    gl::Framebuffer doomOutput;     ///< hdr colour + ldr colour: what the colour-map pass writes
     gl::Texture fxaaInput; ///< the tone-mapped, sRGB-encoded frame FXAA reads (made when FXAA is on)
     gl::Framebuffer fxaaFramebuffer;
     gl::Program debugProgram;
@@ -197,6 +207,7 @@ struct Renderer::Impl {
         if (iblOn(settings)) defines.push_back("IBL");
         if (settings.energyCompensation) defines.push_back("ENERGY_COMPENSATION");
         if (settings.ssao.enabled) defines.push_back("SSAO");
+        if (doomFrame(settings)) defines.push_back("DOOM_INDEXED");
         const std::pair<uint32_t, const char*> featureDefines[] = {
             {SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE, "HAS_BASE_COLOR_TEXTURE"},
             {SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE, "HAS_METALLIC_ROUGHNESS_TEXTURE"},
@@ -264,6 +275,7 @@ struct Renderer::Impl {
         desc.format = gl::Format::SRGB8_ALPHA8;
         desc.label = "ldr colour";
         ldrColor = gl::Texture(desc);
+        doomOutput = {}; // made again, on the new targets, by the next Doom frame
         hdrFramebuffer = gl::Framebuffer("hdr");
         hdrFramebuffer.attachColor(0, hdrColor);
         ldrFramebuffer = gl::Framebuffer("ldr");
@@ -347,12 +359,33 @@ struct Renderer::Impl {
         state.drawTriangles(3, false);
     }
 
+    /// Whether any material of the scene is shaded with the Doom model this frame.
+    bool anyDoomMaterial(const FrameSettings& settings) const
+    {
+        if (!scene) return false;
+        return std::any_of(scene->materials().begin(), scene->materials().end(), [&](const MaterialBinding& m) {
+            return resolveShading(settings.materialOverride, settings.brdfGeometry, m.features).model == scene::ShadingModel::Doom;
+        });
+    }
+
+    /// The passes after the frame's colours are made (the SSAO view), and the frame's stats.
+    void finishFrame(const FrameSettings& settings);
+
+    DoomPass& doomPass()
+    {
+        if (!doom) doom = std::make_unique<DoomPass>();
+        return *doom;
+    }
+
     void drawScene(const View& view, const FrameSettings& settings)
     {
         frame.bind(SPECULA_BINDING_FRAME);
         updateEnvironment(view, settings);
         bindEnvironment(settings);
         lights.bind();
+        const bool indexed = doomFrame(settings);
+        // Doom materials look their colours up in the tables, inline or for the colour-map pass.
+        if (indexed || anyDoomMaterial(settings)) doomPass().bindTables(state);
         if (!scene) return;
         int boundMaterial = -1;
 
@@ -370,7 +403,9 @@ struct Renderer::Impl {
             gl::PipelineDesc pipeline;
             pipeline.cull = m.doubleSided ? gl::CullMode::None : gl::CullMode::Back;
             pipeline.frontFaceClockwise = item.mirrored;
-            if (blend) {
+            // A Doom frame's indices cannot be blended: blended materials are cut out there
+            // (pbr.frag), so they are drawn and depth-written as cutouts.
+            if (blend && !indexed) {
                 pipeline.blend = gl::BlendMode::Alpha;
                 pipeline.noDepthWrite = true;
             }
@@ -398,14 +433,14 @@ struct Renderer::Impl {
             draw(item, false);
         }
         // Cutout billboards belong to the opaque phase: depth-tested and written like surfaces.
-        stats.triangles += billboards.drawOpaque(state, height);
+        stats.triangles += billboards.drawOpaque(state, height, indexed);
         // The sky after the opaque surfaces (it fills only what they left) and before anything blended.
         drawSkybox(settings);
         // Back to front: view-space z is negative in front of the camera, most negative = farthest.
         std::stable_sort(blended.begin(), blended.end(), [](const Blended& a, const Blended& b) { return a.depth < b.depth; });
         for (const Blended& b : blended) draw(*b.item, true);
         // Blended billboards after the blended surfaces (sorted apart from them), gizmos last.
-        stats.triangles += billboards.drawBlended(state, view, height, settings.gizmos ? &lights : nullptr);
+        stats.triangles += billboards.drawBlended(state, view, height, settings.gizmos ? &lights : nullptr, indexed);
     }
 };
 
@@ -451,8 +486,13 @@ void Renderer::prepare(const FrameSettings& requested)
         for (const MaterialBinding& m : r.scene->materials()) r.forwardProgram(settings, m.features);
     const int samples = std::max(settings.msaa, 1);
     const bool hdrPasses = settings.bloom.enabled || settings.autoExposure.enabled;
-    r.tonemap(hdrPasses ? 1 : samples, settings.autoExposure.enabled, settings.fxaa.enabled);
-    r.billboards.prepare();
+    if (doomFrame(settings)) {
+        r.doomPass().prepare();
+    } else {
+        r.tonemap(hdrPasses ? 1 : samples, settings.autoExposure.enabled, settings.fxaa.enabled);
+        if (r.anyDoomMaterial(settings)) r.doomPass();
+    }
+    r.billboards.prepare(doomFrame(settings));
     if (settings.ssao.enabled) {
         if (!r.ssao) r.ssao = std::make_unique<SsaoPass>();
         r.ssao->prepare(r.scene.get());
@@ -528,6 +568,25 @@ void Renderer::render(const View& view, const FrameSettings& requested)
         r.state.bindSampler(SPECULA_UNIT_SSAO, nullptr);
     }
 
+    if (doomFrame(settings)) {
+        // Doom's 8-bit frame: indices and levels, then the colour-map pass writes the palette
+        // colours to both the HDR and the 8-bit target. Nothing else touches them (no tone
+        // curve, exposure, bloom or FXAA: effectiveSettings), so the image is the palette's bytes.
+        DoomPass& doom = r.doomPass();
+        r.pass("forward", [&] {
+            doom.beginFrame(r.state, r.width, r.height, settings.background);
+            r.drawScene(view, settings);
+        });
+        if (r.doomOutput.id() == 0) {
+            r.doomOutput = gl::Framebuffer("doom colour-map output");
+            r.doomOutput.attachColor(0, r.hdrColor).attachColor(1, r.ldrColor).check();
+        }
+        r.pass("colour map", [&] { doom.resolve(r.state, r.doomOutput); });
+        r.hdrResolved = true;
+        r.finishFrame(settings);
+        return;
+    }
+
     r.pass("forward", [&] {
         gl::Framebuffer& target = samples > 1 ? r.msaaFramebuffer : r.hdrFramebuffer;
         r.state.bindFramebuffer(&target);
@@ -588,6 +647,12 @@ void Renderer::render(const View& view, const FrameSettings& requested)
         if (!r.fxaa) r.fxaa = std::make_unique<FxaaPass>();
         r.pass("fxaa", [&] { r.fxaa->apply(r.state, r.fxaaInput, r.ldrFramebuffer); });
     }
+    r.finishFrame(settings);
+}
+
+void Renderer::Impl::finishFrame(const FrameSettings& settings)
+{
+    Impl& r = *this;
     if (settings.debugView == DebugView::Ssao) {
         r.pass("debug view", [&] {
             if (!r.debugProgram)

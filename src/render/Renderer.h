@@ -60,7 +60,9 @@ struct FrameSettings {
     /// schlick-ggx; the other terms use smith-ggx's (see docs/ibl.md).
     BrdfGeometry brdfGeometry = BrdfGeometry::SmithGGX;
     /// Overrides every material's shading model and BRDF terms for the frame (--shading,
-    /// --brdf-d/g/f/diffuse); an unset field leaves each material's own choice.
+    /// --brdf-d/g/f/diffuse); an unset field leaves each material's own choice. The Doom model
+    /// makes the frame Doom's 8-bit frame (render/DoomPass): one sample a pixel, palette
+    /// colours only, no exposure, tone curve, bloom, FXAA or skybox.
     scene::MaterialShading materialOverride;
     glm::vec3 background{0.0f};            ///< radiance behind the scene, cd/m²
     glm::vec3 ambient{0.0f};               ///< constant ambient radiance for the diffuse lobe
@@ -83,7 +85,9 @@ struct FrameSettings {
 
 /// GPU milliseconds per pass of the last frame (timer queries), when timing is on. Passes
 /// in frame order: "ssao prepass", "ssao", "ssao blur", "forward", "resolve", "bloom", "exposure",
-/// "tonemap" or "resolve+tonemap", "fxaa", "debug view"; only those that ran.
+/// "tonemap" or "resolve+tonemap", "fxaa", "debug view"; only those that ran. A Doom frame
+/// (materialOverride doom) runs "forward" (palette indices) and "colour map" instead of the
+/// passes between them and "debug view".
 struct PassTiming {
     const char* name;
     double gpuMs;

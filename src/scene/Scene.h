@@ -83,8 +83,9 @@ struct Material {
     std::optional<float> ior;
     /// Phong and Blinn-Phong exponent; 0 = from roughness, 2/α² − 2 (Walter et al. 2007, eq. 26).
     float shininess = 0.0f;
-    /// Doom model: the sector's light level, 0–255 (scene/DoomLighting.h).
-    int sectorLight = 255;
+    /// Doom model: the sector's light level, 0–255 (scene/DoomLighting.h). The default, 192,
+    /// is a lit room's: full bright up close, darker with distance (255 never darkens).
+    int sectorLight = 192;
 };
 
 struct Vertex {
@@ -220,6 +221,10 @@ struct BillboardGroup {
     float alphaCutoff = 0.5f;         ///< Mask: texels with alpha below it are discarded
     int image = -1;                   ///< index into Scene::images; -1 = the built-in `sprite`
     BuiltinSprite sprite = BuiltinSprite::Disc;
+    /// Doom model frames: the light level, 0–255, of the sector the sprites stand in (they are
+    /// lit by it, as Doom's things were; scene/DoomLighting.h). The default, 255 (full bright),
+    /// suits what billboards are otherwise: emitters.
+    int sectorLight = 255;
     std::vector<Billboard> billboards;
 };
 

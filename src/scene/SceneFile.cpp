@@ -596,6 +596,7 @@ void parseBillboardGroup(const Object& object, Scene& scene, const fs::path& dir
     group.alphaMode = alphaMode == "opaque" ? AlphaMode::Opaque : alphaMode == "blend" ? AlphaMode::Blend : AlphaMode::Mask;
     object.onlyFor("alphaCutoff", group.alphaMode == AlphaMode::Mask, "alphaMode \"mask\"");
     group.alphaCutoff = object.unitInterval("alphaCutoff").value_or(group.alphaCutoff);
+    group.sectorLight = object.integer("sectorLight", 0, 255).value_or(group.sectorLight);
     // The group's axis is each billboard's default; a billboard may give its own.
     object.onlyFor("axis", arbitrary, "arbitrary-axis billboards");
     const glm::vec3 axis = object.direction("axis").value_or(glm::vec3(0.0f, 1.0f, 0.0f));
@@ -674,6 +675,7 @@ RenderSettings parseRender(const Object& object)
     render.exposure = object.number("exposure");
     render.tonemap = object.choice("tonemap", {"none", "reinhard", "reinhard-ext", "aces", "neutral", "agx"});
     render.brdfG = object.choice("brdfG", {"smith-ggx", "smith-ggx-correlated", "schlick-ggx", "neumann", "kelemen", "cook-torrance", "implicit"});
+    render.shading = object.choice("shading", {"pbr", "unlit", "flat", "gouraud", "phong", "blinn-phong", "doom"});
     render.defaultLights = object.boolean("defaultLights");
     render.ev100 = object.number("ev100");
     return render;
@@ -834,8 +836,8 @@ SceneDocument loadSceneFile(const fs::path& path)
                                                 "range", "innerConeAngle", "outerConeAngle"});
     for (size_t i = 0; i < lights.size(); ++i) parseLight(lights[i], scene, i);
     const auto billboards = root.objects("billboards", {"name", "kind", "sprite", "image", "size", "sizeInPixels", "anchor",
-                                                        "tint", "alphaMode", "alphaCutoff", "axis", "position",
-                                                        "billboards", "scatter"});
+                                                        "tint", "alphaMode", "alphaCutoff", "axis", "sectorLight",
+                                                        "position", "billboards", "scatter"});
     for (size_t i = 0; i < billboards.size(); ++i) parseBillboardGroup(billboards[i], scene, directory, i);
     if (const auto camera = root.object("camera", {"type", "name", "position", "target", "direction", "up", "yfov",
                                                    "aspectRatio", "znear", "zfar", "xmag", "ymag", "aperture", "shutter",
@@ -845,7 +847,7 @@ SceneDocument loadSceneFile(const fs::path& path)
     }
     if (const auto environment = root.object("environment", {"color", "file", "intensity", "rotation"}))
         document.environment = parseEnvironment(*environment, directory);
-    if (const auto render = root.object("render", {"width", "height", "msaa", "exposure", "tonemap", "brdfG",
+    if (const auto render = root.object("render", {"width", "height", "msaa", "exposure", "tonemap", "brdfG", "shading",
                                                    "defaultLights", "ev100"})) {
         const auto cameraExposure = document.render.cameraExposure;
         document.render = parseRender(*render);

@@ -17,6 +17,7 @@ struct RenderSettings {
     std::optional<float> exposure;       ///< EV; the image is multiplied by 2^exposure
     std::optional<std::string> tonemap;  ///< none, reinhard, reinhard-ext, aces, neutral, agx
     std::optional<std::string> brdfG;    ///< smith-ggx (default) or schlick-ggx
+    std::optional<std::string> shading;  ///< every material's shading model for the frame (as --shading)
     std::optional<bool> defaultLights;   ///< false = never add the default light rig
     /// Physical camera exposure as EV100 ("render": {"ev100"}), or from the camera's
     /// aperture (f-number), shutter (seconds) and ISO ("camera": {...}); at most one of them.

@@ -1,10 +1,12 @@
-// The material system on the command line: --shading, --brdf-*, --debug-view and gallery.
+// The material system on the command line: --shading, --brdf-*, --debug-view, gallery and the Doom level.
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
 
 #include "CliRunner.h"
 #include "core/ImageIO.h"
+#include "scene/DoomPalette.h"
 
 using namespace specula::test;
 namespace fs = std::filesystem;
@@ -42,4 +44,25 @@ TEST(CliMaterials, GalleryWritesOneSheet)
     // Six models in two rows of three 64-pixel tiles, with captions and padding.
     EXPECT_GT(sheet.width, 3 * 64);
     EXPECT_GT(sheet.height, 2 * 48);
+}
+
+// The built-in Doom level renders as Doom's 8-bit frame by default (its "render.shading"),
+// every pixel a palette colour; --shading overrides it, and then the tone curve leaves the palette.
+TEST(CliMaterials, DoomLevelIsADoomFrameByDefault)
+{
+    const std::string dir = tempDir("materials-doom");
+    const auto r = runCli("render doom -o " + dir + "/doom.png --width 96 --height 64");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto& palette = specula::scene::doom::colorTables().palette;
+    const std::set<specula::scene::doom::Rgb> colours(palette.begin(), palette.end());
+    auto offPalette = [&](const specula::ImageRGBA8& image) {
+        size_t off = 0;
+        for (size_t i = 0; i < image.pixels.size(); i += 4)
+            off += colours.count({image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]}) == 0;
+        return off;
+    };
+    EXPECT_EQ(offPalette(specula::readPng(dir + "/doom.png")), 0u);
+    const auto pbr = runCli("render doom -o " + dir + "/pbr.png --width 96 --height 64 --shading pbr");
+    ASSERT_EQ(pbr.exitCode, 0) << pbr.err;
+    EXPECT_GT(offPalette(specula::readPng(dir + "/pbr.png")), 96u * 64u / 4); // lit by the lamps, tone-mapped
 }

@@ -16,7 +16,6 @@
 #include "render/GpuScene.h"
 #include "render/Renderer.h"
 #include "scene/DemoScenes.h"
-#include "scene/DoomLighting.h"
 #include "scene/Procedural.h"
 
 using namespace specula;
@@ -271,30 +270,4 @@ TEST_F(GlTest, MaterialParameterWritesOnlyItsBytes)
     EXPECT_EQ(written, roughness);
     EXPECT_EQ(gpu.record(1).params.y, roughness);
     EXPECT_EQ(gpu.record(0).params.y, 0.3f);
-}
-
-// The Doom model's frame of the demo level holds only palette colours (the colour-map pass
-// of shaders/forward/doom.glsl), and several of them (sector light, light diminishing).
-TEST_F(GlTest, DoomLevelShowsOnlyPaletteColours)
-{
-    const scene::Scene level = scene::doom::makeDemoLevel();
-    render::Renderer renderer;
-    renderer.setScene(level);
-    render::FrameSettings settings;
-    settings.width = 160;
-    settings.height = 100;
-    settings.materialOverride.model = scene::ShadingModel::Doom; // also forces one sample, no tone curve
-    const render::View view = render::defaultView(level, 0, 1.6f);
-    renderer.render(view, settings);
-    const ImageRGBA8 image = renderer.readImage();
-    const auto palette = scene::doom::makePalette();
-    const std::set<scene::doom::Rgb> colours(palette.begin(), palette.end());
-    std::set<scene::doom::Rgb> seen;
-    for (size_t i = 0; i < image.pixels.size(); i += 4) {
-        const scene::doom::Rgb c = {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]};
-        ASSERT_TRUE(colours.count(c)) << "pixel " << i / 4 << " (" << int(c[0]) << ", " << int(c[1]) << ", " << int(c[2])
-                                      << ") is not a palette colour";
-        seen.insert(c);
-    }
-    EXPECT_GT(seen.size(), 5u); // walls, floor, ceiling, light diminishing: several colours
 }

@@ -1,5 +1,6 @@
 // Doom-era lighting (scene/DoomLighting.h): sector light spreading against hand-computed
-// levels, Doom's light diminishing, and a colour map that only ever yields palette colours.
+// levels and Doom's light diminishing. The palette is tested in test_doom_palette.cpp, the
+// demo level in test_doom_level.cpp.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -42,26 +43,4 @@ TEST(DoomLighting, LightDiminishesWithDistance)
     EXPECT_EQ(colormapIndex(0, 1e6), 31);                       // darkness is the darkest map
     for (int light = 0; light <= 255; light += 15)
         for (double d = 0.0; d < 2000.0; d += 50.0) EXPECT_LE(colormapIndex(light, d), colormapIndex(light, d + 50.0));
-}
-
-TEST(DoomLighting, ColormapOutputsOnlyPaletteColours)
-{
-    const auto palette = makePalette();
-    const auto colormap = makeColormap(palette);
-    ASSERT_EQ(colormap.size(), size_t(kColormaps));
-    // Level 0 is the identity (every palette colour is its own nearest), and every entry of
-    // every level is a palette index (uint8_t: 0–255 by construction) whose colour is no
-    // brighter than the undarkened one.
-    for (int i = 0; i < 256; ++i) EXPECT_EQ(palette[colormap[0][size_t(i)]], palette[size_t(i)]);
-    auto luma = [](const Rgb& c) { return 2 * c[0] + 5 * c[1] + c[2]; };
-    for (int level = 1; level < kColormaps; ++level)
-        for (int i = 0; i < 256; ++i) EXPECT_LE(luma(palette[colormap[size_t(level)][size_t(i)]]), luma(palette[size_t(i)]) + 8);
-    // The darkest level of white is a dark grey.
-    EXPECT_LT(luma(palette[colormap[31][nearestIndex(palette, {255, 255, 255})]]), 8 * 16);
-    // Quantising any colour gives a colour of the palette.
-    const std::set<Rgb> colours(palette.begin(), palette.end());
-    for (int r = 0; r < 256; r += 37)
-        for (int g = 0; g < 256; g += 41)
-            for (int b = 0; b < 256; b += 43)
-                EXPECT_TRUE(colours.count(palette[nearestIndex(palette, {uint8_t(r), uint8_t(g), uint8_t(b)})]));
 }

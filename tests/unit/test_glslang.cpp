@@ -48,6 +48,11 @@ std::vector<Variant> variants()
                                "DEBUG_VIEW_BRDF_D", "DEBUG_VIEW_BRDF_G", "DEBUG_VIEW_BRDF_F"})
         out.push_back({"forward/pbr.frag", {define, "IBL", "HAS_OCCLUSION_TEXTURE"}});
     out.push_back({"forward/pbr.vert", {"SHADING_GOURAUD"}});
+    // A Doom frame (render/DoomPass): the forward pass's and the billboards' indexed output.
+    out.push_back({"forward/pbr.frag", {"SHADING_DOOM", "DOOM_INDEXED"}});
+    out.push_back({"forward/pbr.frag", {"SHADING_DOOM", "DOOM_INDEXED", "HAS_BASE_COLOR_TEXTURE", "ALPHA_BLEND", "VERTEX_COLOR"}});
+    out.push_back({"billboard/billboard.vert", {"DOOM_INDEXED"}});
+    out.push_back({"billboard/billboard.frag", {"DOOM_INDEXED"}});
     out.push_back({"post/tonemap.frag", {"MSAA_SAMPLES 4"}});
     // Post-processing variants (render/BloomPass, SsaoPass, Renderer's tone mapper for FXAA).
     out.push_back({"post/tonemap.frag", {"MSAA_SAMPLES 4", "AUTO_EXPOSURE", "ENCODE_SRGB"}});

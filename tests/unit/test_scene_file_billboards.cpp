@@ -81,7 +81,7 @@ TEST(SceneFileBillboards, ParsesEveryField)
          "tint": [0.8, 1, 0.7], "alphaMode": "mask", "alphaCutoff": 0.3,
          "billboards": [{"position": [1, 0, -2]}, {"position": [3, 0, -4], "scale": 1.5, "tint": [0.5, 0.5, 0.5]}]},
         {"kind": "point-sprite", "size": 16, "sizeInPixels": true, "tint": [50, 40, 30], "alphaMode": "blend",
-         "position": [0, 2, 0]},
+         "sectorLight": 96, "position": [0, 2, 0]},
         {"kind": "arbitrary-axis", "axis": [0, 0, 2], "alphaMode": "opaque",
          "billboards": [{"position": [0, 0, 0]}, {"position": [1, 1, 1], "axis": [1, 0, 0]}]}
       ]
@@ -115,6 +115,8 @@ TEST(SceneFileBillboards, ParsesEveryField)
     EXPECT_EQ(glow.anchor, glm::vec2(0.5f));
     expectVec(glow.tint, {50, 40, 30}); // HDR radiance is allowed
     EXPECT_EQ(glow.alphaMode, AlphaMode::Blend);
+    EXPECT_EQ(glow.sectorLight, 96);
+    EXPECT_EQ(trees.sectorLight, 255); // the default: full bright
     ASSERT_EQ(glow.billboards.size(), 1u);
     expectVec(glow.billboards[0].position, {0, 2, 0});
 
@@ -229,6 +231,8 @@ TEST(SceneFileBillboards, Errors)
          "scene.json: billboards[0].axis only applies to arbitrary-axis billboards"},
         {R"({"billboards": [{"kind": "arbitrary-axis", "axis": [0, 0, 0], "position": [0, 0, 0]}]})",
          "scene.json: billboards[0].axis must not be the zero vector"},
+        {R"({"billboards": [{"sectorLight": 256, "position": [0, 0, 0]}]})",
+         "scene.json: billboards[0].sectorLight must be between 0 and 255"},
         {R"({"billboards": [{"billboards": [{"scale": 2}]}]})", "scene.json: billboards[0].billboards[0] needs 'position'"},
         {R"({"billboards": [{"billboards": [{"position": [0, 0, 0], "scale": -1}]}]})",
          "scene.json: billboards[0].billboards[0].scale must be positive"},

@@ -117,3 +117,17 @@ TEST(SceneFileMaterials, ModelMaterialsByName)
     EXPECT_NE(error(R"({"*": {"shading": "toon"}})").find("models[0].materials.*.shading"), std::string::npos);
     EXPECT_NE(error(R"([1])").find("must be an object"), std::string::npos);
 }
+
+// "render": {"shading"} is the frame's override, as --shading (the Doom model makes the frame
+// Doom's 8-bit frame).
+TEST(SceneFileMaterials, RenderShadingIsTheFramesModel)
+{
+    EXPECT_EQ(loadText(R"({"render": {"shading": "doom"}})").render.shading, std::string("doom"));
+    EXPECT_FALSE(loadText(R"({"render": {"msaa": 4}})").render.shading);
+    try {
+        loadText(R"({"render": {"shading": "quake"}})");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("render.shading"), std::string::npos) << e.what();
+    }
+}

@@ -1,0 +1,140 @@
+#include "render/DoomPass.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gl/Framebuffer.h"
+#include "gl/Program.h"
+#include "gl/State.h"
+#include "gl/Texture.h"
+#include "gl/VertexArray.h"
+#include "render/Tonemap.h"
+#include "scene/DoomPalette.h"
+#include "shaders/shared/Bindings.h"
+
+namespace specula::render {
+
+namespace doom = scene::doom;
+
+struct DoomPass::Impl {
+    gl::Texture nearest, colormap, palette;
+    gl::Program program;
+    gl::VertexArray emptyVertexArray{"doom colour map fullscreen triangle"};
+    int width = 0, height = 0;
+    gl::Texture indexed, depth;
+    gl::Framebuffer framebuffer;
+
+    Impl()
+    {
+        const doom::ColorTables& tables = doom::colorTables();
+        gl::TextureDesc desc;
+        desc.type = gl::TextureType::Texture3D;
+        desc.format = gl::Format::R8UI;
+        desc.width = desc.height = desc.layers = doom::kNearestCells;
+        desc.label = "doom nearest-index table";
+        nearest = gl::Texture(desc);
+        // Entry (b · N + g) · N + r: red along x, green along y, blue along z, as uploaded.
+        nearest.upload(0, 0, 1, gl::PixelType::UnsignedByte, tables.nearest.data());
+
+        desc = {};
+        desc.format = gl::Format::R8UI;
+        desc.width = 256;
+        desc.height = doom::kColormaps;
+        desc.label = "doom colour map";
+        colormap = gl::Texture(desc);
+        // Level k is row k: x = palette index, y = level.
+        colormap.upload(0, 0, 1, gl::PixelType::UnsignedByte, tables.colormap.data());
+
+        desc = {};
+        desc.format = gl::Format::RGBA8; // UNORM: a texel fetch returns the sRGB byte / 255 exactly
+        desc.width = 256;
+        desc.height = 1;
+        desc.label = "doom palette";
+        palette = gl::Texture(desc);
+        std::vector<uint8_t> rgba(256 * 4, 255);
+        for (size_t i = 0; i < 256; ++i) std::copy_n(tables.palette[i].begin(), 3, rgba.begin() + ptrdiff_t(4 * i));
+        palette.upload(0, 0, 4, gl::PixelType::UnsignedByte, rgba.data());
+    }
+
+    void ensureProgram()
+    {
+        if (!program)
+            program = gl::Program({.vertex = "post/fullscreen.vert", .fragment = "doom/colormap.frag", .label = "doom colour map"});
+    }
+};
+
+static_assert(sizeof(scene::doom::ColormapLevel) == 256, "colour map levels are uploaded as rows of 256 bytes");
+
+DoomPass::DoomPass() : mImpl(std::make_unique<Impl>()) {}
+DoomPass::~DoomPass() = default;
+
+void DoomPass::prepare()
+{
+    mImpl->ensureProgram();
+}
+
+void DoomPass::bindTables(gl::State& state) const
+{
+    const Impl& p = *mImpl;
+    // No sampler objects: the tables' own nearest filtering (integer textures need it).
+    state.bindTexture(SPECULA_UNIT_DOOM_NEAREST, p.nearest);
+    state.bindSampler(SPECULA_UNIT_DOOM_NEAREST, nullptr);
+    state.bindTexture(SPECULA_UNIT_DOOM_COLORMAP, p.colormap);
+    state.bindSampler(SPECULA_UNIT_DOOM_COLORMAP, nullptr);
+    state.bindTexture(SPECULA_UNIT_DOOM_PALETTE, p.palette);
+    state.bindSampler(SPECULA_UNIT_DOOM_PALETTE, nullptr);
+}
+
+void DoomPass::beginFrame(gl::State& state, int width, int height, glm::vec3 background)
+{
+    Impl& p = *mImpl;
+    if (width != p.width || height != p.height || !p.indexed) {
+        // The names of deleted targets may be reused: forget the cached bindings.
+        state.reset();
+        p.width = width;
+        p.height = height;
+        gl::TextureDesc desc;
+        desc.width = width;
+        desc.height = height;
+        desc.format = gl::Format::RG8UI;
+        desc.label = "doom indexed frame";
+        p.indexed = gl::Texture(desc);
+        desc.format = gl::Format::Depth32F;
+        desc.label = "doom depth";
+        p.depth = gl::Texture(desc);
+        p.framebuffer = gl::Framebuffer("doom indexed frame");
+        p.framebuffer.attachColor(0, p.indexed).attachDepth(p.depth).check();
+    }
+    state.bindFramebuffer(&p.framebuffer);
+    state.viewport(0, 0, width, height);
+    // Depth writes must be on for the clear to reach the depth buffer.
+    state.apply({});
+    doom::Rgb srgb;
+    for (int c = 0; c < 3; ++c)
+        srgb[size_t(c)] = uint8_t(std::lround(std::clamp(linearToSrgb(std::max(background[c], 0.0f)), 0.0f, 1.0f) * 255.0f));
+    p.framebuffer.clearColorUint(0, doom::colorTables().lookUp(srgb), 0, 0, 0);
+    p.framebuffer.clearDepth(1.0f);
+}
+
+void DoomPass::resolve(gl::State& state, const gl::Framebuffer& output)
+{
+    Impl& p = *mImpl;
+    p.ensureProgram();
+    state.bindFramebuffer(&output);
+    state.viewport(0, 0, p.width, p.height);
+    // No sRGB encoding: colour 1 receives the palette's bytes as they are.
+    state.apply({.noDepthTest = true, .noDepthWrite = true});
+    state.useProgram(p.program);
+    bindTables(state);
+    state.bindTexture(SPECULA_UNIT_POST_INPUT, p.indexed);
+    state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
+    state.bindVertexArray(p.emptyVertexArray);
+    state.drawTriangles(3, false);
+}
+
+std::vector<uint8_t> DoomPass::readIndexed() const
+{
+    return mImpl->indexed ? mImpl->indexed.readBytes(0, 2) : std::vector<uint8_t>{};
+}
+
+} // namespace specula::render
