@@ -60,6 +60,8 @@ struct ForwardProgram {
     gl::Program program;
     int model = -1;
     int normalMatrix = -1;
+    ResolvedShading shading;
+    bool readsDfg = false; ///< samples the DFG table of `shading` (image-based light or energy compensation)
 };
 
 /// The forward pass's define for a material or BRDF debug view (shaders/forward/debug_views.glsl).
@@ -192,8 +194,10 @@ struct Renderer::Impl {
     ForwardProgram& forwardProgram(const FrameSettings& settings, uint32_t features)
     {
         std::vector<std::string> defines;
-        appendShadingDefines(resolveShading(settings.materialOverride, settings.brdfGeometry, features), defines);
-        if (const char* debug = debugViewDefine(settings.debugView)) defines.push_back(debug);
+        const ResolvedShading shading = resolveShading(settings.materialOverride, settings.brdfGeometry, features);
+        appendShadingDefines(shading, defines);
+        const char* debug = debugViewDefine(settings.debugView);
+        if (debug) defines.push_back(debug);
         if (iblOn(settings)) defines.push_back("IBL");
         if (settings.energyCompensation) defines.push_back("ENERGY_COMPENSATION");
         if (settings.ssao.enabled) defines.push_back("SSAO");
@@ -219,7 +223,31 @@ struct Renderer::Impl {
                                  .label = "forward " + key});
         p.model = p.program.uniformLocation("uModel");
         p.normalMatrix = p.program.uniformLocation("uNormalMatrix");
+        p.shading = shading;
+        // Debug views and the classic models return before the split sum (pbr.frag).
+        p.readsDfg = shading.model == scene::ShadingModel::Pbr && !debug && (iblOn(settings) || settings.energyCompensation);
         return forwardPrograms.emplace(key, std::move(p)).first->second;
+    }
+
+    /// The DFG table of a BRDF variant (ImageBasedLighting::dfg), baked on first use. A bake
+    /// runs compute programs behind the binding cache's back, so the cache is reset after one.
+    const gl::Texture& dfgTable(const ResolvedShading& shading)
+    {
+        if (ibl.hasDfg(shading)) return ibl.dfg(shading);
+        const gl::Texture& table = ibl.dfg(shading);
+        state.reset();
+        return table;
+    }
+
+    /// Compiles the forward program of every material for these settings and bakes the DFG
+    /// tables they read, so that no compile or bake lands inside the forward pass (or its timing).
+    void prepareMaterials(const FrameSettings& settings)
+    {
+        if (!scene) return;
+        for (const MaterialBinding& m : scene->materials()) {
+            const ForwardProgram& p = forwardProgram(settings, m.features);
+            if (p.readsDfg) dfgTable(p.shading);
+        }
     }
 
     gl::Program& tonemap(int samples, bool automaticExposure, bool encodeSrgb)
@@ -303,14 +331,8 @@ struct Renderer::Impl {
         }
     }
 
-    void bindEnvironment(const FrameSettings& settings)
+    void bindEnvironment()
     {
-        if (settings.energyCompensation || iblOn(settings)) {
-            // One table a frame: smith-ggx's for every G but schlick-ggx (docs/ibl.md).
-            const BrdfGeometry g = settings.materialOverride.geometry.value_or(settings.brdfGeometry);
-            state.bindTexture(SPECULA_UNIT_DFG, ibl.dfg(g == BrdfGeometry::SchlickGGX));
-            state.bindSampler(SPECULA_UNIT_DFG, nullptr);
-        }
         if (ibl.hasEnvironment()) {
             state.bindTexture(SPECULA_UNIT_PREFILTERED, ibl.prefiltered());
             state.bindSampler(SPECULA_UNIT_PREFILTERED, nullptr);
@@ -351,7 +373,7 @@ struct Renderer::Impl {
     {
         frame.bind(SPECULA_BINDING_FRAME);
         updateEnvironment(view, settings);
-        bindEnvironment(settings);
+        bindEnvironment();
         lights.bind();
         if (!scene) return;
         int boundMaterial = -1;
@@ -366,6 +388,11 @@ struct Renderer::Impl {
             const GpuPrimitive& p = scene->primitives()[size_t(item.primitive)];
             const MaterialBinding& m = scene->materials()[size_t(p.material)];
             ForwardProgram& program = forwardProgram(settings, m.features);
+            if (program.readsDfg) {
+                // Each draw reads the table of its own variant (docs/ibl.md).
+                state.bindTexture(SPECULA_UNIT_DFG, dfgTable(program.shading));
+                state.bindSampler(SPECULA_UNIT_DFG, nullptr);
+            }
             state.useProgram(program.program);
             gl::PipelineDesc pipeline;
             pipeline.cull = m.doubleSided ? gl::CullMode::None : gl::CullMode::Back;
@@ -447,8 +474,7 @@ void Renderer::prepare(const FrameSettings& requested)
 {
     Impl& r = *mImpl;
     const FrameSettings settings = effectiveSettings(requested);
-    if (r.scene)
-        for (const MaterialBinding& m : r.scene->materials()) r.forwardProgram(settings, m.features);
+    r.prepareMaterials(settings);
     const int samples = std::max(settings.msaa, 1);
     const bool hdrPasses = settings.bloom.enabled || settings.autoExposure.enabled;
     r.tonemap(hdrPasses ? 1 : samples, settings.autoExposure.enabled, settings.fxaa.enabled);
@@ -499,6 +525,7 @@ void Renderer::render(const View& view, const FrameSettings& requested)
     r.ensureTargets(std::max(settings.width, 1), std::max(settings.height, 1), samples);
     r.stats = {};
     r.timed.clear();
+    r.prepareMaterials(settings);
     r.state.resetCounters();
 
     auto& f = r.frame.data();
