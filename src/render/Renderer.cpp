@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <map>
+#include <type_traits>
 
 #include <epoxy/gl.h>
 
@@ -340,18 +342,39 @@ struct Renderer::Impl {
         }
     }
 
+    /// Writes one field of the environment block and uploads it, if it changed. The CPU copy
+    /// always mirrors the buffer (made from it, and every edit uploaded), so comparing with it
+    /// is comparing with what the GPU holds.
+    template <typename Field>
+    void setEnvironmentField(Field shared::EnvironmentData::*field, const Field& value)
+    {
+        Field& current = environment.data().*field;
+        if constexpr (std::is_array_v<Field>) {
+            if (std::equal(std::begin(current), std::end(current), std::begin(value))) return;
+            std::copy(std::begin(value), std::end(value), std::begin(current));
+        } else {
+            if (current == value) return;
+            current = value;
+        }
+        environment.upload(field);
+    }
+
+    /// Uploads what changed of the environment block: the view every frame the camera moves,
+    /// the rotation and parameters when the settings change, the SH when the environment does.
     void updateEnvironment(const View& view, const FrameSettings& settings)
     {
         if (!ibl.hasEnvironment()) return;
-        auto& e = environment.data();
-        for (size_t i = 0; i < 9; ++i) e.sh[i] = glm::vec4(ibl.sh()[i], 0.0f);
-        e.worldToEnvironment = glm::mat4(environmentRotation(-settings.environment.rotationDegrees));
-        e.inverseViewProjection = glm::inverse(view.projection * view.view);
+        using shared::EnvironmentData;
+        glm::vec4 sh[9];
+        for (size_t i = 0; i < 9; ++i) sh[i] = glm::vec4(ibl.sh()[i], 0.0f);
+        setEnvironmentField(&EnvironmentData::sh, sh);
+        setEnvironmentField(&EnvironmentData::worldToEnvironment, glm::mat4(environmentRotation(-settings.environment.rotationDegrees)));
+        setEnvironmentField(&EnvironmentData::inverseViewProjection, glm::inverse(view.projection * view.view));
         const float blur = std::clamp(settings.environment.skyboxBlur, 0.0f, 1.0f);
-        e.params = glm::vec4(settings.environment.intensity, float(ibl.prefiltered().levels()),
-                             blur > 0.0f ? blur * float(ibl.prefiltered().levels() - 1) : -1.0f,
-                             settings.environment.skybox ? 1.0f : 0.0f);
-        environment.upload();
+        setEnvironmentField(&EnvironmentData::params,
+                            glm::vec4(settings.environment.intensity, float(ibl.prefiltered().levels()),
+                                      blur > 0.0f ? blur * float(ibl.prefiltered().levels() - 1) : -1.0f,
+                                      settings.environment.skybox ? 1.0f : 0.0f));
     }
 
     void drawSkybox(const FrameSettings& settings)
@@ -372,7 +395,9 @@ struct Renderer::Impl {
     void drawScene(const View& view, const FrameSettings& settings)
     {
         frame.bind(SPECULA_BINDING_FRAME);
+        const size_t environmentBytes = environment.buffer().bytesUpdated();
         updateEnvironment(view, settings);
+        stats.environmentBytesUploaded = environment.buffer().bytesUpdated() - environmentBytes;
         bindEnvironment();
         lights.bind();
         if (!scene) return;

@@ -97,6 +97,9 @@ struct PassTiming {
 struct FrameStats {
     int drawCalls = 0;
     size_t triangles = 0;    ///< submitted after culling
+    /// Bytes of the environment's uniform block uploaded for the frame: only the fields that
+    /// changed (the view when the camera moves, the SH when the environment does).
+    size_t environmentBytesUploaded = 0;
     std::vector<PassTiming> passes;
 };
 

@@ -1,7 +1,7 @@
 // Image-based lighting on the GPU: furnace tests in a uniform environment (also per BRDF
 // variant, each with its own DFG table), the direction convention with a bright patch and a
-// mirror sphere, and the split sum against a CPU Monte Carlo integral of the same BRDF under
-// a real HDR.
+// mirror sphere, the split sum against a CPU Monte Carlo integral of the same BRDF under a
+// real HDR, and the environment block's partial uploads.
 #include "GlTestContext.h"
 
 #include <algorithm>
@@ -17,6 +17,7 @@
 #include "render/EnvironmentMap.h"
 #include "render/Renderer.h"
 #include "scene/Procedural.h"
+#include "shaders/shared/EnvironmentData.h"
 
 using namespace specula;
 using specula::test::GlTest;
@@ -493,4 +494,44 @@ TEST_F(GlTest, EnergyCompensationKeepsEveryVariantsWhiteMetalInTheFurnace)
         std::printf("compensated white metal, %d variants, roughness %.1f: worst deviation %.2f%%\n", count, roughness,
                     100.0 * worstOfAll);
     }
+}
+
+TEST_F(GlTest, EnvironmentBlockUploadsOnlyWhatChanged)
+{
+    // The environment's uniform block (SH, rotation, inverse view-projection, parameters) is
+    // written field by field, and only where a field changed: a still frame uploads nothing,
+    // a moved camera one matrix, a new environment its SH. The image follows each change.
+    scene::Scene s;
+    scene::Material m;
+    m.metallicFactor = 0.0f;
+    m.roughnessFactor = 0.5f;
+    scene::addShape(s, scene::makeUvSphere(1.0f, 32, 16), m, glm::mat4(1.0f), "sphere");
+    render::Renderer renderer;
+    renderer.setScene(s);
+    renderer.setEnvironment(render::constantEnvironment(glm::vec3(0.5f)));
+    render::FrameSettings settings;
+    settings.width = settings.height = 32;
+    settings.msaa = 1;
+    settings.tonemap = render::Tonemap::None;
+    const render::View near = render::lookAtView({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
+    const render::View far = render::lookAtView({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
+    using shared::EnvironmentData;
+    auto frame = [&](const render::View& view) {
+        renderer.render(view, settings);
+        return renderer.stats().environmentBytesUploaded;
+    };
+    auto centre = [&] { return renderer.readRadiance().pixels[(16 * 32 + 16) * 4]; };
+
+    EXPECT_EQ(frame(near), sizeof(EnvironmentData)); // every field differs from the zeroed block
+    const float first = centre();
+    EXPECT_EQ(frame(near), 0u);
+    EXPECT_EQ(frame(far), sizeof(glm::mat4)); // inverseViewProjection
+    settings.environment.rotationDegrees = 30.0f;
+    EXPECT_EQ(frame(far), sizeof(glm::mat4)); // worldToEnvironment
+    settings.environment.intensity = 2.0f;
+    EXPECT_EQ(frame(far), sizeof(glm::vec4)); // params
+    EXPECT_NEAR(centre(), 2.0f * first, 0.01f * first);
+    renderer.setEnvironment(render::constantEnvironment(glm::vec3(0.25f)));
+    EXPECT_EQ(frame(far), sizeof(EnvironmentData::sh)); // the SH only
+    EXPECT_NEAR(centre(), first, 0.01f * first);
 }
