@@ -19,8 +19,8 @@ int runBake(const BakeArgs& args)
     render::ImageBasedLighting ibl;
     ibl.setLutCacheDirectory(directory);
     const render::BakeReport report = ibl.setEnvironment(map, *preset, directory);
-    ibl.dfg(false);
-    ibl.dfg(true);
+    // The glTF BRDF's table; other BRDF variants' tables are baked (and cached) on first use.
+    ibl.dfg(render::ResolvedShading{});
     if (debug.errorCount() > 0) throw Error("OpenGL reported {} error(s); first: {}", debug.errorCount(), debug.errors().front());
     std::printf("%s %s (%s, %.0f ms)\n", report.fromCache ? "already cached:" : "wrote", report.cacheFile.string().c_str(),
                 preset->name.c_str(), report.milliseconds);

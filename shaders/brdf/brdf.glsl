@@ -3,7 +3,8 @@
 // Schlick Fresnel, Lambert weighted by 1 - F). Variants come from defines, at most one per
 // group (render/ShadingVariant makes them from a material's scene::MaterialShading):
 //   D        BRDF_D_BECKMANN, BRDF_D_BLINN_PHONG                         (else GGX)
-//   G        BRDF_G_SCHLICK_GGX (Schlick-GGX, k = (r + 1)^2 / 8, UE4), BRDF_G_SMITH_GGX_CORRELATED,
+//   G        BRDF_G_SCHLICK_GGX (Schlick-GGX, k = (r + 1)^2 / 8, UE4; k = r^2 / 2 for image-based
+//            light), BRDF_G_SMITH_GGX_CORRELATED,
 //            BRDF_G_NEUMANN, BRDF_G_KELEMEN, BRDF_G_COOK_TORRANCE, BRDF_G_IMPLICIT (else separable Smith)
 //   F        BRDF_F_SCHLICK_SG, BRDF_F_NONE                              (else Schlick)
 //   diffuse  BRDF_DIFFUSE_OREN_NAYAR, BRDF_DIFFUSE_BURLEY                (else Lambert)
@@ -69,6 +70,17 @@ float brdfV(SurfaceBrdf s, float NoV, float NoL, float NoH, float VoH)
 #endif
 }
 
+// The visibility image-based light sees (the split-sum bake, ibl/dfg.comp, integrates it):
+// brdfV, but Schlick-GGX without its punctual-light remap, k = alpha / 2, as UE4 does.
+float brdfVImageBased(SurfaceBrdf s, float NoV, float NoL, float NoH, float VoH)
+{
+#if defined(BRDF_G_SCHLICK_GGX)
+    return V_SchlickGGXImageBased(NoV, NoL, s.alpha);
+#else
+    return brdfV(s, NoV, NoL, NoH, VoH);
+#endif
+}
+
 vec3 brdfF(SurfaceBrdf s, float VoH)
 {
 #if defined(BRDF_F_SCHLICK_SG)
@@ -77,6 +89,19 @@ vec3 brdfF(SurfaceBrdf s, float VoH)
     return F_None(s.f0);
 #else
     return F_Schlick(s.f0, s.f90, VoH);
+#endif
+}
+
+// The weight of (f90 - f0) in F, F = f0 + (f90 - f0) * brdfFresnelWeight(VoH): what the
+// split-sum DFG bake integrates for the table's bias term (ibl/dfg.comp). F = none has none.
+float brdfFresnelWeight(float VoH)
+{
+#if defined(BRDF_F_SCHLICK_SG)
+    return Fc_SchlickSG(VoH);
+#elif defined(BRDF_F_NONE)
+    return 0.0;
+#else
+    return Fc_Schlick(VoH);
 #endif
 }
 

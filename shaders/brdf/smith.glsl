@@ -21,6 +21,17 @@ float V_SchlickGGX(float NoV, float NoL, float perceptualRoughness)
     return gl * gv / max(4.0 * NoL * NoV, 1e-7);
 }
 
+// Schlick-GGX with k = alpha / 2 = r^2 / 2 for image-based light: Karis 2013, "Real Shading in
+// Unreal Engine 4", p. 3 (the (r + 1) / 2 remap of V_SchlickGGX is for punctual lights only; the
+// LearnOpenGL IBL tutorial does the same).
+float V_SchlickGGXImageBased(float NoV, float NoL, float alpha)
+{
+    float k = alpha * 0.5;
+    float gl = NoL / (NoL * (1.0 - k) + k);
+    float gv = NoV / (NoV * (1.0 - k) + k);
+    return gl * gv / max(4.0 * NoL * NoV, 1e-7); // as V_SchlickGGX
+}
+
 // Height-correlated Smith G for GGX: Heitz 2014, "Understanding the Masking-Shadowing Function
 // in Microfacet-Based BRDFs", eq. 99, written as V (Lagarde & de Rousiers 2014, eq. 3; Filament).
 float V_SmithGGXCorrelated(float NoV, float NoL, float alpha)

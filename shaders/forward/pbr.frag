@@ -141,14 +141,22 @@ void main()
     float NoV = max(dot(n, v), 1e-4); // 1e-4: normal-mapped texels can face away from the viewer
 
 #if defined(IBL) || defined(ENERGY_COMPENSATION)
-    // Split-sum DFG terms: single-scattering specular albedo E = f0 * dfg.x + dfg.y. The
-    // multiple-scattering compensation scales the specular lobe by 1 + f0 (1 / E(1) - 1), so a
-    // white metal reflects all the energy single scattering loses (Fdez-Aguera 2019, "A
-    // Multiple-Scattering Microfacet Model for Real-Time Image-based Lighting"; Filament).
+    // Split-sum DFG terms of this draw's own D, G and F (the renderer binds the table baked for
+    // its variant): single-scattering specular albedo E = f0 * dfg.x + f90 * dfg.y.
     vec2 dfg = texture(uDfg, vec2(NoV, perceptualRoughness)).rg;
+#if defined(BRDF_F_NONE)
+    // F = f0 at every angle, so f0 scales the grazing term too: E = f0 (dfg.x + dfg.y). The
+    // variant reads Schlick's table, whose sum is the integral without F (dfgVariant).
+    dfg = vec2(dfg.x + dfg.y, 0.0);
+#endif
+#endif
+#if defined(ENERGY_COMPENSATION)
+    // The multiple-scattering compensation scales the specular lobe by 1 + f0 (1 / E(1) - 1), so
+    // a white metal reflects all the energy single scattering loses (Fdez-Aguera 2019, "A
+    // Multiple-Scattering Microfacet Model for Real-Time Image-based Lighting"; Filament).
+    // 1e-4 keeps the factor finite where a variant's E(1) vanishes: towards n.v = 0 with the
+    // implicit or Neumann G, whose single scattering reflects almost nothing there.
     vec3 energyCompensation = 1.0 + surface.f0 * (1.0 / max(dfg.x + dfg.y, 1e-4) - 1.0);
-    // With KHR_materials_specular's F90 < 1 the split sum's grazing term scales with it.
-    dfg.y *= surface.f90;
 #else
     const vec3 energyCompensation = vec3(1.0);
 #endif
@@ -170,7 +178,8 @@ void main()
 
 #if defined(IBL)
     vec3 r = reflect(-v, n);
-    vec3 specularAlbedo = (surface.f0 * dfg.x + dfg.y) * energyCompensation;
+    // With KHR_materials_specular's F90 < 1 the split sum's grazing term scales with it.
+    vec3 specularAlbedo = (surface.f0 * dfg.x + surface.f90 * dfg.y) * energyCompensation;
     // What the specular lobe reflects, the diffuse lobe below it cannot: 1 - E keeps a white
     // dielectric in a white furnace at or below the environment's radiance.
     vec3 diffuseIbl = irradianceSh(toEnvironment(n)) * surface.diffuseColor * INV_PI * (1.0 - specularAlbedo);

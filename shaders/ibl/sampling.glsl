@@ -1,4 +1,4 @@
-// Low-discrepancy sequence and GGX importance sampling for the bakes.
+// Low-discrepancy sequence and importance sampling of the normal distributions for the bakes.
 
 // Hammersley point i of n (Van der Corput radical inverse in base 2).
 vec2 hammersley(uint i, uint n)
@@ -12,6 +12,29 @@ vec3 importanceSampleGgx(vec2 xi, float alpha)
 {
     float phi = 2.0 * PI * xi.x;
     float cosTheta = sqrt((1.0 - xi.y) / (1.0 + (alpha * alpha - 1.0) * xi.y));
+    float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
+    return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
+}
+
+// Half vector around +Z distributed as D_Beckmann(h) (n.h): Walter et al. 2007, section 5.2,
+// tan²θ = -α² ln(1 - ξ). cos θ and sin θ come from tan²θ itself, which keeps their precision
+// where α is small and θ tiny.
+vec3 importanceSampleBeckmann(vec2 xi, float alpha)
+{
+    float phi = 2.0 * PI * xi.x;
+    float tan2Theta = -alpha * alpha * log(1.0 - xi.y); // xi.y < 1 (Hammersley), so finite
+    float cosTheta = inversesqrt(1.0 + tan2Theta);
+    float sinTheta = sqrt(tan2Theta) * cosTheta;
+    return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
+}
+
+// Half vector around +Z distributed as the normalised Blinn-Phong D(h) (n.h) = (n + 2) / 2π
+// cos^(n + 1)θ: Walter et al. 2007, section 5.2, cos θ = ξ^(1 / (n + 2)), with 1 - ξ for ξ so
+// that the first Hammersley point (ξ = 0) is the pole, as for the other samplers.
+vec3 importanceSampleBlinnPhong(vec2 xi, float exponent)
+{
+    float phi = 2.0 * PI * xi.x;
+    float cosTheta = pow(1.0 - xi.y, 1.0 / (exponent + 2.0));
     float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
     return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
 }

@@ -41,6 +41,14 @@ double V_SchlickGGX(double NoV, double NoL, double r)
     return gl * gv / std::max(4.0 * NoL * NoV, 1e-7);
 }
 
+double V_SchlickGGXImageBased(double NoV, double NoL, double alpha)
+{
+    const double k = alpha / 2.0;
+    const double gl = NoL / (NoL * (1.0 - k) + k);
+    const double gv = NoV / (NoV * (1.0 - k) + k);
+    return gl * gv / std::max(4.0 * NoL * NoV, 1e-7);
+}
+
 double V_SmithGGXCorrelated(double NoV, double NoL, double alpha)
 {
     const double a2 = alpha * alpha;
@@ -129,6 +137,12 @@ double visibility(Geometry g, double NoV, double NoL, double NoH, double VoH, do
     return 0.0;
 }
 
+double visibilityImageBased(Geometry g, double NoV, double NoL, double NoH, double VoH, double r)
+{
+    if (g == Geometry::SchlickGGX) return V_SchlickGGXImageBased(NoV, NoL, r * r);
+    return visibility(g, NoV, NoL, NoH, VoH, r);
+}
+
 dvec3 fresnel(Fresnel f, const dvec3& f0, double f90, double VoH)
 {
     switch (f) {
@@ -164,7 +178,8 @@ dvec3 evaluate(const Surface& s, const dvec3& n, const dvec3& v, const dvec3& l)
     const dvec3 diffuseColor = s.baseColor * (1.0 - s.metallic);
     const dvec3 F = fresnel(s.fresnel, f0, f90, VoH);
     const double D = distribution(s.distribution, NoH, alpha);
-    const double V = visibility(s.geometry, NoV, NoL, NoH, VoH, r);
+    const double V = s.imageBased ? visibilityImageBased(s.geometry, NoV, NoL, NoH, VoH, r)
+                                  : visibility(s.geometry, NoV, NoL, NoH, VoH, r);
     const double Fd = diffuseLobe(s.diffuse, r, NoV, NoL, VoH, glm::dot(v, l));
     return (dvec3(1.0) - F) * diffuseColor * Fd + F * (D * V);
 }

@@ -24,6 +24,7 @@ double D_Beckmann(double NoH, double alpha);
 double D_BlinnPhong(double NoH, double alpha);
 double V_SmithGGX(double NoV, double NoL, double alpha);
 double V_SchlickGGX(double NoV, double NoL, double perceptualRoughness);
+double V_SchlickGGXImageBased(double NoV, double NoL, double alpha);
 double V_SmithGGXCorrelated(double NoV, double NoL, double alpha);
 double V_Neumann(double NoV, double NoL);
 double V_Kelemen(double VoH);
@@ -38,6 +39,8 @@ double Fd_OrenNayar(double perceptualRoughness, double NoV, double NoL, double V
 /// The dispatch of shaders/brdf/brdf.glsl, one function per group.
 double distribution(Distribution d, double NoH, double alpha);
 double visibility(Geometry g, double NoV, double NoL, double NoH, double VoH, double perceptualRoughness);
+/// brdfVImageBased: the visibility the split-sum DFG table integrates (Schlick-GGX with k = α/2).
+double visibilityImageBased(Geometry g, double NoV, double NoL, double NoH, double VoH, double perceptualRoughness);
 dvec3 fresnel(Fresnel f, const dvec3& f0, double f90, double VoH);
 double diffuseLobe(Diffuse d, double perceptualRoughness, double NoV, double NoL, double LoH, double VoL); ///< × albedo
 
@@ -51,6 +54,8 @@ struct Surface {
     Fresnel fresnel = Fresnel::Schlick;
     Diffuse diffuse = Diffuse::Lambert;
     double f0Dielectric = 0.04;  ///< scene::f0FromIor(ior) when the material gives an ior
+    /// The BRDF as image-based light sees it: visibilityImageBased instead of visibility.
+    bool imageBased = false;
 };
 
 /// f(l, v) (1/sr) for unit n, v, l, not multiplied by NoL. Zero when NoL <= 0.

@@ -9,22 +9,13 @@
 #include <glm/gtc/constants.hpp>
 
 #include "core/Error.h"
+#include "core/Hash.h"
 #include "core/ImageIO.h"
 
 namespace specula::render {
 namespace {
 
 constexpr float kPi = glm::pi<float>();
-
-std::string fnv1a(const std::string& bytes)
-{
-    uint64_t hash = 1469598103934665603ull;
-    for (unsigned char c : bytes) {
-        hash ^= c;
-        hash *= 1099511628211ull;
-    }
-    return fmt::format("{:016x}", hash);
-}
 
 // Real SH basis up to l = 2 (Sloan 2008, "Stupid Spherical Harmonics Tricks", appendix).
 std::array<float, 9> shBasis(const glm::vec3& d)
@@ -88,7 +79,7 @@ EnvironmentMap loadEnvironmentMap(const std::filesystem::path& path)
     std::ifstream in(path, std::ios::binary);
     std::ostringstream bytes;
     bytes << in.rdbuf();
-    map.key = "file-" + fnv1a(bytes.str());
+    map.key = fmt::format("file-{:016x}", fnv1a64(bytes.str()));
     return map;
 }
 

@@ -2,19 +2,23 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <map>
 
 #include <unistd.h>
 
 #include <fmt/format.h>
 
 #include "core/Error.h"
+#include "core/Hash.h"
 #include "core/Log.h"
 #include "core/Timer.h"
 #include "gl/Debug.h"
 #include "gl/Program.h"
+#include "gl/ShaderSource.h"
 #include "gl/Texture.h"
 
 namespace specula::render {
@@ -136,20 +140,43 @@ bool checkMagic(std::ifstream& in)
     return in.read(magic, sizeof magic) && std::memcmp(magic, kMagic, sizeof magic) == 0;
 }
 
+int dfgKey(const ResolvedShading& variant)
+{
+    return (int(variant.distribution) * 8 + int(variant.geometry)) * 8 + int(variant.fresnel);
+}
+
+/// "ggx smith-ggx schlick": the variant's D, G and F by their scene-file names.
+std::string dfgName(const ResolvedShading& variant)
+{
+    return fmt::format("{} {} {}", scene::brdfDistributionName(variant.distribution), scene::brdfGeometryName(variant.geometry),
+                       scene::brdfFresnelName(variant.fresnel));
+}
+
 } // namespace
 
+ResolvedShading dfgVariant(const ResolvedShading& shading)
+{
+    ResolvedShading v;
+    v.distribution = shading.distribution;
+    v.geometry = shading.geometry;
+    v.fresnel = shading.fresnel == scene::BrdfFresnel::None ? scene::BrdfFresnel::Schlick : shading.fresnel;
+    return v;
+}
+
 struct ImageBasedLighting::Impl {
-    gl::Program toCube, prefilter, dfgSmith, dfgSchlick;
+    gl::Program toCube, prefilter;
     gl::Texture cube, prefiltered;
-    gl::Texture lut[2];
+    /// DFG tables by dfgKey of their variant, made on first use; the compute program is
+    /// compiled only to bake (a table read from the disk cache needs none) and not kept.
+    std::map<int, gl::Texture> luts;
     Sh9 sh{};
     bool has = false;
     fs::path lutCacheDirectory;
     BakeSettings lutSettings;
 
-    gl::Program& program(gl::Program& p, const char* path, std::vector<std::string> defines = {})
+    gl::Program& program(gl::Program& p, const char* path)
     {
-        if (!p) p = gl::Program({.compute = path, .defines = std::move(defines), .label = path});
+        if (!p) p = gl::Program({.compute = path, .label = path});
         return p;
     }
 
@@ -212,21 +239,26 @@ struct ImageBasedLighting::Impl {
         sh = projectSh9(map);
     }
 
-    void bakeLut(int index)
+    /// Returns the milliseconds spent compiling the program (the rest of a bake is the dispatch).
+    double bakeLut(gl::Texture& lut, const std::vector<std::string>& defines, const std::string& label)
     {
+        gl::DebugGroup group("bake " + label);
         gl::TextureDesc desc;
         desc.format = gl::Format::RG16F;
         desc.width = desc.height = lutSettings.lutSize;
-        desc.label = index ? "dfg schlick-ggx" : "dfg smith-ggx";
-        lut[index] = gl::Texture(desc);
-        gl::Program& p = index ? program(dfgSchlick, "ibl/dfg.comp", {"BRDF_G_SCHLICK_GGX"}) : program(dfgSmith, "ibl/dfg.comp");
+        desc.label = label;
+        lut = gl::Texture(desc);
+        Stopwatch compile;
+        gl::Program p({.compute = "ibl/dfg.comp", .defines = defines, .label = label});
+        const double compileMs = compile.elapsedMs();
         glUseProgram(p.id());
         p.set(p.uniformLocation("uSamples"), uint32_t(lutSettings.lutSamples));
-        glBindImageTexture(0, lut[index].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
+        glBindImageTexture(0, lut.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
         glDispatchCompute(GLuint(groups(lutSettings.lutSize)), GLuint(groups(lutSettings.lutSize)), 1);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
         glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
         glUseProgram(0);
+        return compileMs;
     }
 };
 
@@ -246,6 +278,8 @@ BakeReport ImageBasedLighting::setEnvironment(const EnvironmentMap& map, const B
     Impl& r = *mImpl;
     Stopwatch watch;
     BakeReport report;
+    // Tables of other sizes or sample counts are other tables.
+    if (settings.lutSize != r.lutSettings.lutSize || settings.lutSamples != r.lutSettings.lutSamples) r.luts.clear();
     r.lutSettings = settings;
     if (!cacheDirectory.empty()) {
         report.cacheFile = cacheDirectory / fmt::format("env-{}-{}.bin", map.key, settings.key());
@@ -278,24 +312,44 @@ BakeReport ImageBasedLighting::setEnvironment(const EnvironmentMap& map, const B
     return report;
 }
 
-const gl::Texture& ImageBasedLighting::dfg(bool schlickGgx)
+bool ImageBasedLighting::hasDfg(const ResolvedShading& shading) const
+{
+    const auto it = mImpl->luts.find(dfgKey(dfgVariant(shading)));
+    return it != mImpl->luts.end() && it->second;
+}
+
+const gl::Texture& ImageBasedLighting::dfg(const ResolvedShading& shading)
 {
     Impl& r = *mImpl;
-    const int index = schlickGgx ? 1 : 0;
-    if (r.lut[index]) return r.lut[index];
-    const fs::path file = r.lutCacheDirectory.empty()
-                              ? fs::path()
-                              : r.lutCacheDirectory / fmt::format("dfg-v1-{}-{}-{}.bin", index ? "schlick" : "smith",
-                                                                  r.lutSettings.lutSize, r.lutSettings.lutSamples);
-    if (!file.empty()) {
+    const ResolvedShading variant = dfgVariant(shading);
+    gl::Texture& lut = r.luts[dfgKey(variant)];
+    if (lut) return lut;
+    // The defines are the forward pass's for this D, G and F (one source, render/ShadingVariant).
+    std::vector<std::string> defines;
+    appendShadingDefines(variant, defines);
+    const std::string name = dfgName(variant);
+    const std::string label = "dfg " + name;
+    fs::path file;
+    if (!r.lutCacheDirectory.empty()) {
+        // The key holds what the table depends on: the variant, its size and samples, and the
+        // shader source as compiled (includes and defines), so an edited BRDF term or bake
+        // shader is a new entry rather than a stale one.
+        const uint64_t source = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/dfg.comp", defines).text);
+        std::string fileName = fmt::format("dfg-{}-{}x{}-{:016x}.bin", name, r.lutSettings.lutSize, r.lutSettings.lutSamples, source);
+        std::replace(fileName.begin(), fileName.end(), ' ', '-');
+        file = r.lutCacheDirectory / fileName;
         std::ifstream in(file, std::ios::binary);
-        if (in && checkMagic(in) && readTexture(in, r.lut[index], "dfg", gl::Format::RG16F, 2)) return r.lut[index];
+        if (in && checkMagic(in) && readTexture(in, lut, label, gl::Format::RG16F, 2) && lut.width() == r.lutSettings.lutSize)
+            return lut;
     }
     Stopwatch watch;
-    r.bakeLut(index);
-    if (!file.empty()) writeAtomically(file, [&](std::ofstream& out) { writeTextures(out, r.lut[index]); });
-    log::debug("DFG table ({}) in {:.0f} ms", index ? "schlick-ggx" : "smith-ggx", watch.elapsedMs());
-    return r.lut[index];
+    const double compileMs = r.bakeLut(lut, defines, label);
+    glFinish(); // the time of the bake, not of its submission
+    const double bakeMs = watch.elapsedMs();
+    if (!file.empty()) writeAtomically(file, [&](std::ofstream& out) { writeTextures(out, lut); });
+    log::info("baked the DFG table of {} ({}², {} samples) in {:.0f} ms (compiling {:.0f} ms)", name, r.lutSettings.lutSize,
+              r.lutSettings.lutSamples, bakeMs, compileMs);
+    return lut;
 }
 
 } // namespace specula::render

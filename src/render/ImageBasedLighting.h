@@ -1,8 +1,8 @@
 #pragma once
 // Image-based lighting resources: the environment as a mipmapped cube map, its prefiltered
-// specular mip chain, its order-2 SH irradiance, and the split-sum DFG tables. Bakes run as
-// compute shaders and are cached on disk, keyed by the environment's content and the bake
-// parameters.
+// specular mip chain, its order-2 SH irradiance, and the split-sum DFG table of each BRDF
+// variant in use. Bakes run as compute shaders and are cached on disk, keyed by the
+// environment's content (or the table's shader source) and the bake parameters.
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "render/EnvironmentMap.h"
+#include "render/ShadingVariant.h"
 
 namespace specula::gl {
 class Texture;
@@ -24,8 +25,8 @@ struct BakeSettings {
     int prefilterSize = 128;  ///< prefiltered level 0 face size
     int prefilterLevels = 6;  ///< roughness = level / (levels - 1)
     int prefilterSamples = 256;
-    int lutSize = 128;
-    int lutSamples = 512;
+    int lutSize = 128;        ///< DFG table size (n.v × perceptual roughness)
+    int lutSamples = 512;     ///< DFG samples per texel
     /// Cache file name part for these parameters.
     std::string key() const;
 };
@@ -36,6 +37,12 @@ std::optional<BakeSettings> bakePreset(std::string_view name);
 
 /// $SPECULA_CACHE_DIR, else $XDG_CACHE_HOME/specula, else ~/.cache/specula.
 std::filesystem::path defaultCacheDirectory();
+
+/// The variant whose DFG table a draw shaded with `shading` reads: its D, G and F, the model
+/// and diffuse lobe at their defaults (they do not enter the table). F = none reads Schlick's
+/// table: with F = f0 both terms scale by f0, E = f0 (scale + bias), and scale + bias is the
+/// integral without F, the same for every Fresnel weight.
+ResolvedShading dfgVariant(const ResolvedShading& shading);
 
 struct BakeReport {
     bool fromCache = false;
@@ -59,9 +66,15 @@ public:
     const Sh9& sh() const;
     const gl::Texture& cube() const;
     const gl::Texture& prefiltered() const;
-    /// The DFG table for the separable Smith term (schlick = false) or Schlick-GGX with
-    /// k = r²/2; computed on first use (and cached on disk with the same directory rules).
-    const gl::Texture& dfg(bool schlickGgx);
+    /// The split-sum DFG table of dfgVariant(shading): baked on first use by
+    /// shaders/ibl/dfg.comp compiled with the variant's defines (the forward pass's), and
+    /// cached on disk (setLutCacheDirectory) under a name that holds the variant, the table
+    /// size and samples, and a hash of the compiled source. Kept until the table parameters
+    /// of setEnvironment's settings change.
+    const gl::Texture& dfg(const ResolvedShading& shading);
+    /// Whether dfg(shading) is ready. A bake runs compute programs behind the back of a
+    /// gl::State cache: its owner resets it after one.
+    bool hasDfg(const ResolvedShading& shading) const;
     void setLutCacheDirectory(const std::filesystem::path& directory);
 
 private:

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <map>
+#include <type_traits>
 
 #include <epoxy/gl.h>
 
@@ -61,6 +63,8 @@ struct ForwardProgram {
     gl::Program program;
     int model = -1;
     int normalMatrix = -1;
+    ResolvedShading shading;
+    bool readsDfg = false; ///< samples the DFG table of `shading` (image-based light or energy compensation)
 };
 
 /// The forward pass's define for a material or BRDF debug view (shaders/forward/debug_views.glsl).
@@ -202,8 +206,10 @@ struct Renderer::Impl {
     ForwardProgram& forwardProgram(const FrameSettings& settings, uint32_t features)
     {
         std::vector<std::string> defines;
-        appendShadingDefines(resolveShading(settings.materialOverride, settings.brdfGeometry, features), defines);
-        if (const char* debug = debugViewDefine(settings.debugView)) defines.push_back(debug);
+        const ResolvedShading shading = resolveShading(settings.materialOverride, settings.brdfGeometry, features);
+        appendShadingDefines(shading, defines);
+        const char* debug = debugViewDefine(settings.debugView);
+        if (debug) defines.push_back(debug);
         if (iblOn(settings)) defines.push_back("IBL");
         if (settings.energyCompensation) defines.push_back("ENERGY_COMPENSATION");
         if (settings.ssao.enabled) defines.push_back("SSAO");
@@ -230,7 +236,31 @@ struct Renderer::Impl {
                                  .label = "forward " + key});
         p.model = p.program.uniformLocation("uModel");
         p.normalMatrix = p.program.uniformLocation("uNormalMatrix");
+        p.shading = shading;
+        // Debug views and the classic models return before the split sum (pbr.frag).
+        p.readsDfg = shading.model == scene::ShadingModel::Pbr && !debug && (iblOn(settings) || settings.energyCompensation);
         return forwardPrograms.emplace(key, std::move(p)).first->second;
+    }
+
+    /// The DFG table of a BRDF variant (ImageBasedLighting::dfg), baked on first use. A bake
+    /// runs compute programs behind the binding cache's back, so the cache is reset after one.
+    const gl::Texture& dfgTable(const ResolvedShading& shading)
+    {
+        if (ibl.hasDfg(shading)) return ibl.dfg(shading);
+        const gl::Texture& table = ibl.dfg(shading);
+        state.reset();
+        return table;
+    }
+
+    /// Compiles the forward program of every material for these settings and bakes the DFG
+    /// tables they read, so that no compile or bake lands inside the forward pass (or its timing).
+    void prepareMaterials(const FrameSettings& settings)
+    {
+        if (!scene) return;
+        for (const MaterialBinding& m : scene->materials()) {
+            const ForwardProgram& p = forwardProgram(settings, m.features);
+            if (p.readsDfg) dfgTable(p.shading);
+        }
     }
 
     gl::Program& tonemap(int samples, bool automaticExposure, bool encodeSrgb)
@@ -315,14 +345,8 @@ struct Renderer::Impl {
         }
     }
 
-    void bindEnvironment(const FrameSettings& settings)
+    void bindEnvironment()
     {
-        if (settings.energyCompensation || iblOn(settings)) {
-            // One table a frame: smith-ggx's for every G but schlick-ggx (docs/ibl.md).
-            const BrdfGeometry g = settings.materialOverride.geometry.value_or(settings.brdfGeometry);
-            state.bindTexture(SPECULA_UNIT_DFG, ibl.dfg(g == BrdfGeometry::SchlickGGX));
-            state.bindSampler(SPECULA_UNIT_DFG, nullptr);
-        }
         if (ibl.hasEnvironment()) {
             state.bindTexture(SPECULA_UNIT_PREFILTERED, ibl.prefiltered());
             state.bindSampler(SPECULA_UNIT_PREFILTERED, nullptr);
@@ -330,18 +354,39 @@ struct Renderer::Impl {
         }
     }
 
+    /// Writes one field of the environment block and uploads it, if it changed. The CPU copy
+    /// always mirrors the buffer (made from it, and every edit uploaded), so comparing with it
+    /// is comparing with what the GPU holds.
+    template <typename Field>
+    void setEnvironmentField(Field shared::EnvironmentData::*field, const Field& value)
+    {
+        Field& current = environment.data().*field;
+        if constexpr (std::is_array_v<Field>) {
+            if (std::equal(std::begin(current), std::end(current), std::begin(value))) return;
+            std::copy(std::begin(value), std::end(value), std::begin(current));
+        } else {
+            if (current == value) return;
+            current = value;
+        }
+        environment.upload(field);
+    }
+
+    /// Uploads what changed of the environment block: the view every frame the camera moves,
+    /// the rotation and parameters when the settings change, the SH when the environment does.
     void updateEnvironment(const View& view, const FrameSettings& settings)
     {
         if (!ibl.hasEnvironment()) return;
-        auto& e = environment.data();
-        for (size_t i = 0; i < 9; ++i) e.sh[i] = glm::vec4(ibl.sh()[i], 0.0f);
-        e.worldToEnvironment = glm::mat4(environmentRotation(-settings.environment.rotationDegrees));
-        e.inverseViewProjection = glm::inverse(view.projection * view.view);
+        using shared::EnvironmentData;
+        glm::vec4 sh[9];
+        for (size_t i = 0; i < 9; ++i) sh[i] = glm::vec4(ibl.sh()[i], 0.0f);
+        setEnvironmentField(&EnvironmentData::sh, sh);
+        setEnvironmentField(&EnvironmentData::worldToEnvironment, glm::mat4(environmentRotation(-settings.environment.rotationDegrees)));
+        setEnvironmentField(&EnvironmentData::inverseViewProjection, glm::inverse(view.projection * view.view));
         const float blur = std::clamp(settings.environment.skyboxBlur, 0.0f, 1.0f);
-        e.params = glm::vec4(settings.environment.intensity, float(ibl.prefiltered().levels()),
-                             blur > 0.0f ? blur * float(ibl.prefiltered().levels() - 1) : -1.0f,
-                             settings.environment.skybox ? 1.0f : 0.0f);
-        environment.upload();
+        setEnvironmentField(&EnvironmentData::params,
+                            glm::vec4(settings.environment.intensity, float(ibl.prefiltered().levels()),
+                                      blur > 0.0f ? blur * float(ibl.prefiltered().levels() - 1) : -1.0f,
+                                      settings.environment.skybox ? 1.0f : 0.0f));
     }
 
     void drawSkybox(const FrameSettings& settings)
@@ -380,8 +425,10 @@ struct Renderer::Impl {
     void drawScene(const View& view, const FrameSettings& settings)
     {
         frame.bind(SPECULA_BINDING_FRAME);
+        const size_t environmentBytes = environment.buffer().bytesUpdated();
         updateEnvironment(view, settings);
-        bindEnvironment(settings);
+        stats.environmentBytesUploaded = environment.buffer().bytesUpdated() - environmentBytes;
+        bindEnvironment();
         lights.bind();
         const bool indexed = doomFrame(settings);
         // Doom materials look their colours up in the tables, inline or for the colour-map pass.
@@ -399,6 +446,11 @@ struct Renderer::Impl {
             const GpuPrimitive& p = scene->primitives()[size_t(item.primitive)];
             const MaterialBinding& m = scene->materials()[size_t(p.material)];
             ForwardProgram& program = forwardProgram(settings, m.features);
+            if (program.readsDfg) {
+                // Each draw reads the table of its own variant (docs/ibl.md).
+                state.bindTexture(SPECULA_UNIT_DFG, dfgTable(program.shading));
+                state.bindSampler(SPECULA_UNIT_DFG, nullptr);
+            }
             state.useProgram(program.program);
             gl::PipelineDesc pipeline;
             pipeline.cull = m.doubleSided ? gl::CullMode::None : gl::CullMode::Back;
@@ -482,8 +534,7 @@ void Renderer::prepare(const FrameSettings& requested)
 {
     Impl& r = *mImpl;
     const FrameSettings settings = effectiveSettings(requested);
-    if (r.scene)
-        for (const MaterialBinding& m : r.scene->materials()) r.forwardProgram(settings, m.features);
+    r.prepareMaterials(settings);
     const int samples = std::max(settings.msaa, 1);
     const bool hdrPasses = settings.bloom.enabled || settings.autoExposure.enabled;
     if (doomFrame(settings)) {
@@ -539,6 +590,7 @@ void Renderer::render(const View& view, const FrameSettings& requested)
     r.ensureTargets(std::max(settings.width, 1), std::max(settings.height, 1), samples);
     r.stats = {};
     r.timed.clear();
+    r.prepareMaterials(settings);
     r.state.resetCounters();
 
     auto& f = r.frame.data();

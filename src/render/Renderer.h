@@ -56,8 +56,8 @@ struct FrameSettings {
     float exposureEv = 0.0f;               ///< image multiplied by 2^exposureEv
     Tonemap tonemap = Tonemap::Neutral;
     float reinhardWhite = 4.0f;            ///< white point of reinhard-ext (cd/m² after exposure)
-    /// G of materials that choose none. The IBL's DFG table exists for smith-ggx and
-    /// schlick-ggx; the other terms use smith-ggx's (see docs/ibl.md).
+    /// G of materials that choose none. Each BRDF variant in use gets its own DFG table for
+    /// image-based light and energy compensation (see docs/ibl.md).
     BrdfGeometry brdfGeometry = BrdfGeometry::SmithGGX;
     /// Overrides every material's shading model and BRDF terms for the frame (--shading,
     /// --brdf-d/g/f/diffuse); an unset field leaves each material's own choice. The Doom model
@@ -101,6 +101,9 @@ struct PassTiming {
 struct FrameStats {
     int drawCalls = 0;
     size_t triangles = 0;    ///< submitted after culling
+    /// Bytes of the environment's uniform block uploaded for the frame: only the fields that
+    /// changed (the view when the camera moves, the SH when the environment does).
+    size_t environmentBytesUploaded = 0;
     std::vector<PassTiming> passes;
 };
 

@@ -52,10 +52,13 @@ TEST(Brdf, GeometryTermsStayInUnitInterval)
             for (double NoL = 0.01; NoL <= 1.0; NoL += 0.07) {
                 const double smith = V_SmithGGX(NoV, NoL, alpha) * 4.0 * NoL * NoV;
                 const double schlick = V_SchlickGGX(NoV, NoL, roughness) * 4.0 * NoL * NoV;
+                const double schlickImageBased = V_SchlickGGXImageBased(NoV, NoL, alpha) * 4.0 * NoL * NoV;
                 EXPECT_GE(smith, 0.0);
                 EXPECT_LE(smith, 1.0 + 1e-12);
                 EXPECT_GE(schlick, 0.0);
                 EXPECT_LE(schlick, 1.0 + 1e-12);
+                EXPECT_GE(schlickImageBased, 0.0);
+                EXPECT_LE(schlickImageBased, 1.0 + 1e-12);
             }
         }
         // Looking straight down at a lit surface, nothing is masked as roughness -> 0.

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "render/Brdf.h"
 
@@ -160,4 +161,41 @@ TEST(BrdfVariants, ClassicModels)
     const dvec3 v2 = glm::normalize(dvec3(-1, 0.3, 1));
     EXPECT_GT(evaluateClassic(dvec3(0), ks, 50.0, true, n, v2, l).x, evaluateClassic(dvec3(0), ks, 50.0, false, n, v2, l).x);
     EXPECT_DOUBLE_EQ(classicShininess(1.0), 1.0);
+}
+
+TEST(BrdfVariants, SchlickGgxImageBasedKeepsMoreThanItsPunctualForm)
+{
+    // The DFG table of schlick-ggx integrates k = α/2 (UE4's image-based form), the punctual
+    // lights use k = (r + 1)²/8 >= α/2 (equal at r = 1): the image-based G1 is the larger, so a
+    // white metal's image-based albedo is too. The energy compensation, taken from that table,
+    // therefore restores a punctual-lit schlick-ggx white metal to E_punctual / E_image-based,
+    // not to 1: printed here (docs/materials.md), midpoint rule in (cos θ_l, φ_l).
+    const dvec3 n(0, 0, 1);
+    for (double roughness : {0.3, 0.5, 0.8, 1.0}) {
+        for (double NoV : {0.2, 0.5, 1.0}) {
+            const dvec3 v(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
+            double albedo[2] = {0.0, 0.0};
+            for (int imageBased = 0; imageBased < 2; ++imageBased) {
+                Surface s{dvec3(1.0), 1.0, roughness, Geometry::SchlickGGX};
+                s.imageBased = imageBased == 1;
+                const int nMu = 1200, nPhi = 240;
+                double sum = 0.0;
+                for (int i = 0; i < nMu; ++i) {
+                    const double mu = (i + 0.5) / nMu;
+                    for (int j = 0; j < nPhi; ++j) {
+                        const dvec3 l = sphericalDirection(std::acos(mu), (j + 0.5) / nPhi * kPi);
+                        sum += evaluate(s, n, v, l).x * mu;
+                    }
+                }
+                albedo[imageBased] = 2.0 * sum / nMu * kPi / nPhi;
+            }
+            if (roughness < 1.0) {
+                EXPECT_GT(albedo[1], albedo[0]) << "roughness " << roughness << " n.v " << NoV;
+            } else {
+                EXPECT_NEAR(albedo[1], albedo[0], 1e-12) << "n.v " << NoV;
+            }
+            std::printf("schlick-ggx white metal, roughness %.1f, n.v %.1f: albedo %.3f punctual, %.3f image-based, ratio %.2f\n",
+                        roughness, NoV, albedo[0], albedo[1], albedo[0] / albedo[1]);
+        }
+    }
 }

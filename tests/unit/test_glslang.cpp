@@ -59,7 +59,12 @@ std::vector<Variant> variants()
     out.push_back({"post/bloom_downsample.comp", {"FIRST_LEVEL"}});
     out.push_back({"post/bloom_downsample.comp", {"FIRST_LEVEL", "KARIS_AVERAGE"}});
     out.push_back({"forward/prepass.frag", {"ALPHA_MASK", "HAS_BASE_COLOR_TEXTURE", "VERTEX_COLOR"}});
-    out.push_back({"ibl/dfg.comp", {"BRDF_G_SCHLICK_GGX"}});
+    // The DFG bake (render/ImageBasedLighting): each D, G and F define it is made with, alone
+    // (the groups are independent dispatches) and one from every group together.
+    for (const char* define : {"BRDF_D_BECKMANN", "BRDF_D_BLINN_PHONG", "BRDF_G_SCHLICK_GGX", "BRDF_G_SMITH_GGX_CORRELATED",
+                               "BRDF_G_NEUMANN", "BRDF_G_KELEMEN", "BRDF_G_COOK_TORRANCE", "BRDF_G_IMPLICIT", "BRDF_F_SCHLICK_SG"})
+        out.push_back({"ibl/dfg.comp", {define}});
+    out.push_back({"ibl/dfg.comp", {"BRDF_D_BLINN_PHONG", "BRDF_G_KELEMEN", "BRDF_F_SCHLICK_SG"}});
     return out;
 }
 

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <random>
 #include <string>
@@ -15,6 +14,7 @@
 #include <glm/gtc/constants.hpp>
 #include <nlohmann/json.hpp>
 
+#include "TestFiles.h"
 #include "core/Error.h"
 #include "scene/GltfImporter.h"
 
@@ -22,58 +22,14 @@ namespace fs = std::filesystem;
 using namespace specula;
 using namespace specula::scene;
 using nlohmann::json;
+using test::errorOf;
+using test::readFile;
+using test::TempDir;
+using test::writeFile;
 
 namespace {
 
 const fs::path kModels = fs::path(SPECULA_ASSETS_DIR) / "models";
-
-/// A fresh directory under the system temp directory, removed with everything in it.
-class TempDir {
-public:
-    TempDir()
-    {
-        std::random_device random;
-        mPath = fs::temp_directory_path() / ("specula-gltf-" + std::to_string(random()));
-        fs::create_directories(mPath);
-    }
-    ~TempDir()
-    {
-        std::error_code ec;
-        fs::remove_all(mPath, ec);
-    }
-    fs::path operator/(const std::string& name) const { return mPath / name; }
-
-private:
-    fs::path mPath;
-};
-
-void writeFile(const fs::path& path, const std::string& bytes)
-{
-    std::ofstream out(path, std::ios::binary);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-}
-
-std::string readFile(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-/// The message of the Error `f` throws; fails the test if it throws nothing or something else.
-template <typename F>
-std::string errorOf(F&& f)
-{
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "threw a non-Error exception: " << e.what();
-        return {};
-    }
-    ADD_FAILURE() << "did not throw";
-    return {};
-}
 
 std::string base64(const std::vector<uint8_t>& data)
 {

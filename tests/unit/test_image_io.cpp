@@ -3,80 +3,25 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
 
 #include <unistd.h>
 
-#include "core/Error.h"
+#include "TestFiles.h"
 #include "core/ImageIO.h"
 
 namespace fs = std::filesystem;
 using namespace specula;
+using test::errorOf;
+using test::readFile;
+using test::TempDir;
+using test::writeFile;
 
 namespace {
 
 const fs::path kAssets = SPECULA_ASSETS_DIR;
-
-/// A fresh directory under the system temp directory, removed with everything in it.
-class TempDir {
-public:
-    TempDir()
-    {
-        std::random_device random;
-        mPath = fs::temp_directory_path() / ("specula-image-io-" + std::to_string(random()));
-        fs::create_directories(mPath);
-    }
-    ~TempDir()
-    {
-        std::error_code ec;
-        fs::permissions(mPath, fs::perms::owner_all, fs::perm_options::add, ec);
-        fs::remove_all(mPath, ec);
-    }
-    const fs::path& path() const { return mPath; }
-    fs::path operator/(const std::string& name) const { return mPath / name; }
-    /// Names of the entries in the directory, hidden ones (the writers' temp files) included.
-    std::vector<std::string> entries() const
-    {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(mPath)) names.push_back(entry.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
-private:
-    fs::path mPath;
-};
-
-/// The message of the Error `f` throws; fails the test if it throws nothing or something else.
-template <typename F>
-std::string errorOf(F&& f)
-{
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "not a specula::Error: " << e.what();
-        return {};
-    }
-    ADD_FAILURE() << "no error thrown";
-    return {};
-}
-
-std::vector<char> readBytes(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void writeBytes(const fs::path& path, const char* data, size_t size)
-{
-    std::ofstream out(path, std::ios::binary);
-    out.write(data, std::streamsize(size));
-}
 
 ImageRGBA8 testPattern8(int width, int height)
 {
@@ -283,7 +228,7 @@ TEST(ImageIo, ReadErrors)
               "cannot read " + (dir / "missing.exr").string() + ": No such file or directory");
 
     const fs::path text = dir / "text.png";
-    writeBytes(text, "hello, world\n", 13);
+    writeFile(text, "hello, world\n");
     EXPECT_TRUE(errorOf([&] { readPng(text); }).starts_with("cannot read " + text.string() + ": not a readable image"));
     EXPECT_EQ(errorOf([&] { readFloatImage(text); }),
               "cannot read " + text.string() + ": not a Radiance .hdr or OpenEXR image");
@@ -301,9 +246,9 @@ TEST(ImageIo, TruncatedPngIsAnError)
 {
     TempDir dir;
     writePng(dir / "a.png", testPattern8(64, 64));
-    const std::vector<char> bytes = readBytes(dir / "a.png");
+    const std::string bytes = readFile(dir / "a.png");
     for (size_t size : {size_t(0), size_t(8), size_t(40), bytes.size() / 2, bytes.size() - 1}) {
-        writeBytes(dir / "t.png", bytes.data(), size);
+        writeFile(dir / "t.png", std::string_view(bytes).substr(0, size));
         EXPECT_TRUE(errorOf([&] { readPng(dir / "t.png"); }).starts_with("cannot read " + (dir / "t.png").string() + ": "))
             << "truncated to " << size << " bytes";
     }
@@ -312,15 +257,15 @@ TEST(ImageIo, TruncatedPngIsAnError)
 TEST(ImageIo, TruncatedHdrIsAnError)
 {
     TempDir dir;
-    const std::vector<char> bytes = readBytes(kAssets / "env" / "studio_1k.hdr");
+    const std::string bytes = readFile(kAssets / "env" / "studio_1k.hdr");
     ASSERT_GT(bytes.size(), 100000u);
     // Cut inside the header, inside a scanline, and where stb_image would not notice by itself.
     const fs::path path = dir / "t.hdr";
-    writeBytes(path, bytes.data(), 5);
+    writeFile(path, std::string_view(bytes).substr(0, 5));
     EXPECT_EQ(errorOf([&] { readFloatImage(path); }),
               "cannot read " + path.string() + ": not a Radiance .hdr or OpenEXR image");
     for (size_t size : {size_t(70), size_t(200), bytes.size() / 3, bytes.size() / 2, bytes.size() - 1}) {
-        writeBytes(path, bytes.data(), size);
+        writeFile(path, std::string_view(bytes).substr(0, size));
         EXPECT_EQ(errorOf([&] { readFloatImage(path); }), "cannot read " + path.string() + ": the file is truncated")
             << "truncated to " << size << " bytes";
     }
@@ -330,13 +275,13 @@ TEST(ImageIo, CorruptHdrIsAnError)
 {
     // A zero run length, which makes Debian's stb_image loop forever.
     TempDir dir;
-    std::vector<char> bytes = readBytes(kAssets / "env" / "studio_1k.hdr");
+    std::string bytes = readFile(kAssets / "env" / "studio_1k.hdr");
     const std::string resolution = "-Y 512 +X 1024\n";
     const auto at = std::search(bytes.begin(), bytes.end(), resolution.begin(), resolution.end());
     ASSERT_NE(at, bytes.end());
     const size_t firstCount = size_t(at - bytes.begin()) + resolution.size() + 4; // after the scanline header
     bytes[firstCount] = 0;
-    writeBytes(dir / "c.hdr", bytes.data(), bytes.size());
+    writeFile(dir / "c.hdr", bytes);
     EXPECT_EQ(errorOf([&] { readFloatImage(dir / "c.hdr"); }),
               "cannot read " + (dir / "c.hdr").string() + ": corrupt run-length data");
 }
@@ -344,18 +289,18 @@ TEST(ImageIo, CorruptHdrIsAnError)
 TEST(ImageIo, TruncatedExrIsAnError)
 {
     TempDir dir;
-    const std::vector<char> bytes = readBytes(kAssets / "env" / "studio.exr");
+    const std::string bytes = readFile(kAssets / "env" / "studio.exr");
     ASSERT_GT(bytes.size(), 10000u);
     const fs::path path = dir / "t.exr";
     const std::string expected = "cannot read " + path.string() + ": the file is truncated";
     for (size_t size : {size_t(4), size_t(100), size_t(400), bytes.size() / 3, bytes.size() / 2, bytes.size() - 1}) {
-        writeBytes(path, bytes.data(), size);
+        writeFile(path, std::string_view(bytes).substr(0, size));
         EXPECT_EQ(errorOf([&] { readFloatImage(path); }), expected) << "truncated to " << size << " bytes";
     }
     // Our own ZIP-compressed files too.
     writeExr(dir / "a.exr", testPatternFloat(64, 64));
-    const std::vector<char> ours = readBytes(dir / "a.exr");
-    writeBytes(path, ours.data(), ours.size() - 10);
+    const std::string ours = readFile(dir / "a.exr");
+    writeFile(path, std::string_view(ours).substr(0, ours.size() - 10));
     EXPECT_EQ(errorOf([&] { readFloatImage(path); }), expected);
 }
 

@@ -4,79 +4,25 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <random>
 #include <string>
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "TestFiles.h"
 #include "core/Error.h"
 #include "scene/SceneFile.h"
 
 namespace fs = std::filesystem;
 using namespace specula;
 using namespace specula::scene;
+using test::errorOf;
+using test::sceneError;
+using test::TempDir;
 
 namespace {
 
 const fs::path kBox = fs::path(SPECULA_ASSETS_DIR) / "models" / "Box" / "Box.glb";
-
-/// A fresh directory under the system temp directory, removed with everything in it.
-class TempDir {
-public:
-    TempDir()
-    {
-        std::random_device random;
-        mPath = fs::temp_directory_path() / ("specula-scene-file-" + std::to_string(random()));
-        fs::create_directories(mPath);
-    }
-    ~TempDir()
-    {
-        std::error_code ec;
-        fs::remove_all(mPath, ec);
-    }
-    const fs::path& path() const { return mPath; }
-    fs::path operator/(const std::string& name) const { return mPath / name; }
-
-    /// Writes `text` to `name` in the directory and returns its path.
-    fs::path write(const std::string& name, const std::string& text) const
-    {
-        std::ofstream out(mPath / name, std::ios::binary);
-        out << text;
-        return mPath / name;
-    }
-
-private:
-    fs::path mPath;
-};
-
-template <typename F>
-std::string errorOf(F&& f)
-{
-    try {
-        f();
-    } catch (const Error& e) {
-        const std::string message = e.what();
-        EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
-        return message;
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "not a specula::Error: " << e.what();
-        return {};
-    }
-    ADD_FAILURE() << "no error thrown";
-    return {};
-}
-
-/// The error loading a scene file with this text; the file path is replaced by "scene.json".
-std::string sceneError(const std::string& text)
-{
-    TempDir dir;
-    const fs::path path = dir.write("scene.json", text);
-    std::string message = errorOf([&] { loadSceneFile(path); });
-    if (message.starts_with(path.string())) message.replace(0, path.string().size(), "scene.json");
-    return message;
-}
 
 void expectVec3(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f)
 {
@@ -487,8 +433,7 @@ TEST(SceneFile, SyntaxErrorsGiveLineAndColumn)
 TEST(SceneFile, DocumentedExampleLoads)
 {
     // The example in docs/scene-format.md, next to an `assets` link to the shared assets.
-    std::ifstream in(fs::path(SPECULA_SOURCE_DIR) / "docs" / "scene-format.md");
-    const std::string doc{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::string doc = test::readFile(fs::path(SPECULA_SOURCE_DIR) / "docs" / "scene-format.md");
     const size_t begin = doc.find("```json\n");
     ASSERT_NE(begin, std::string::npos);
     const size_t end = doc.find("```", begin + 8);

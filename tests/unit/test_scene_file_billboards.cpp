@@ -3,65 +3,23 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <random>
+#include <string>
 
-#include "core/Error.h"
+#include "TestFiles.h"
 #include "core/ImageIO.h"
 #include "scene/SceneFile.h"
 
 namespace fs = std::filesystem;
 using namespace specula;
 using namespace specula::scene;
+using test::sceneError;
+using test::TempDir;
 
 namespace {
 
-class TempDir {
-public:
-    TempDir()
-    {
-        std::random_device random;
-        mPath = fs::temp_directory_path() / ("specula-billboard-file-" + std::to_string(random()));
-        fs::create_directories(mPath);
-    }
-    ~TempDir()
-    {
-        std::error_code ec;
-        fs::remove_all(mPath, ec);
-    }
-    fs::path operator/(const std::string& name) const { return mPath / name; }
-    fs::path write(const std::string& name, const std::string& text) const
-    {
-        std::ofstream out(mPath / name, std::ios::binary);
-        out << text;
-        return mPath / name;
-    }
-
-private:
-    fs::path mPath;
-};
-
 Scene load(const std::string& text)
 {
-    TempDir dir;
-    return loadSceneFile(dir.write("scene.json", text)).scene;
-}
-
-/// The one-line error for `text`, with the file path replaced by "scene.json".
-std::string sceneError(const std::string& text)
-{
-    TempDir dir;
-    const fs::path path = dir.write("scene.json", text);
-    try {
-        loadSceneFile(path);
-    } catch (const Error& e) {
-        std::string message = e.what();
-        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-        if (message.starts_with(path.string())) message.replace(0, path.string().size(), "scene.json");
-        return message;
-    }
-    ADD_FAILURE() << "no error for " << text;
-    return {};
+    return test::loadSceneText(text).scene;
 }
 
 void expectVec(glm::vec3 a, glm::vec3 b)
@@ -258,8 +216,7 @@ TEST(SceneFileBillboards, DocumentedExampleHasBillboards)
 {
     // The first example in docs/scene-format.md (also loaded by test_scene_file.cpp) carries a
     // billboard group, so the documented schema stays valid.
-    std::ifstream in(fs::path(SPECULA_SOURCE_DIR) / "docs" / "scene-format.md");
-    const std::string doc{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::string doc = test::readFile(fs::path(SPECULA_SOURCE_DIR) / "docs" / "scene-format.md");
     const size_t begin = doc.find("```json\n");
     ASSERT_NE(begin, std::string::npos);
     const size_t end = doc.find("```", begin + 8);

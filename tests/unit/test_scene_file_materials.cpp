@@ -2,36 +2,17 @@
 // (docs/scene-format.md); unknown names are one-line errors.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
-#include <random>
+#include <string>
 
-#include "core/Error.h"
+#include "TestFiles.h"
 #include "scene/SceneFile.h"
 
-namespace fs = std::filesystem;
 using namespace specula;
 using namespace specula::scene;
 
-namespace {
-
-SceneDocument loadText(const std::string& text)
-{
-    std::random_device random;
-    const fs::path path = fs::temp_directory_path() / ("specula-materials-" + std::to_string(random()) + ".json");
-    std::ofstream(path) << text;
-    struct Remove {
-        fs::path p;
-        ~Remove() { fs::remove(p); }
-    } remove{path};
-    return loadSceneFile(path);
-}
-
-} // namespace
-
 TEST(SceneFileMaterials, ShadingAndBrdfPerMaterial)
 {
-    const SceneDocument d = loadText(R"({"shapes": [
+    const SceneDocument d = test::loadSceneText(R"({"shapes": [
         {"type": "sphere", "material": {"shading": "blinn-phong", "shininess": 64}},
         {"type": "sphere", "material": {"brdfD": "beckmann", "brdfG": "kelemen", "brdfF": "schlick-sg",
                                         "brdfDiffuse": "oren-nayar", "ior": 1.33}},
@@ -56,12 +37,7 @@ TEST(SceneFileMaterials, ShadingAndBrdfPerMaterial)
 TEST(SceneFileMaterials, BadNamesAreErrors)
 {
     auto error = [](const std::string& material) {
-        try {
-            loadText(R"({"shapes": [{"type": "sphere", "material": )" + material + "}]}");
-        } catch (const Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
+        return test::sceneError(R"({"shapes": [{"type": "sphere", "material": )" + material + "}]}");
     };
     EXPECT_NE(error(R"({"shading": "toon"})").find("shading"), std::string::npos);
     EXPECT_NE(error(R"({"brdfG": "smith"})").find("brdfG"), std::string::npos);
