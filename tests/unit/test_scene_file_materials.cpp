@@ -2,11 +2,13 @@
 // (docs/scene-format.md); unknown names are one-line errors.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "TestFiles.h"
 #include "scene/SceneFile.h"
 
+namespace fs = std::filesystem;
 using namespace specula;
 using namespace specula::scene;
 
@@ -50,8 +52,8 @@ TEST(SceneFileMaterials, BadNamesAreErrors)
 TEST(SceneFileMaterials, ModelMaterialsByName)
 {
     const std::string model = (fs::path(SPECULA_ASSETS_DIR) / "models/AlphaBlendModeTest/AlphaBlendModeTest.glb").string();
-    const SceneDocument plain = loadText(R"({"models": [{"path": ")" + model + R"("}]})");
-    const SceneDocument d = loadText(R"({"models": [{"path": ")" + model + R"(", "materials": {
+    const SceneDocument plain = test::loadSceneText(R"({"models": [{"path": ")" + model + R"("}]})");
+    const SceneDocument d = test::loadSceneText(R"({"models": [{"path": ")" + model + R"(", "materials": {
         "MatBlend": {"shading": "phong", "shininess": 32},
         "#5": {"brdfD": "beckmann", "roughness": 0.25},
         "*": {"shading": "gouraud", "brdfDiffuse": "burley"}}}]})");
@@ -78,12 +80,7 @@ TEST(SceneFileMaterials, ModelMaterialsByName)
     }
 
     auto error = [&](const std::string& materials) {
-        try {
-            loadText(R"({"models": [{"path": ")" + model + R"(", "materials": )" + materials + "}]}");
-        } catch (const Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
+        return test::sceneError(R"({"models": [{"path": ")" + model + R"(", "materials": )" + materials + "}]}");
     };
     const std::string unknown = error(R"({"MatBlnd": {"shading": "phong"}})");
     EXPECT_NE(unknown.find("'MatBlnd'"), std::string::npos) << unknown;
@@ -98,12 +95,8 @@ TEST(SceneFileMaterials, ModelMaterialsByName)
 // Doom's 8-bit frame).
 TEST(SceneFileMaterials, RenderShadingIsTheFramesModel)
 {
-    EXPECT_EQ(loadText(R"({"render": {"shading": "doom"}})").render.shading, std::string("doom"));
-    EXPECT_FALSE(loadText(R"({"render": {"msaa": 4}})").render.shading);
-    try {
-        loadText(R"({"render": {"shading": "quake"}})");
-        FAIL() << "no error";
-    } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("render.shading"), std::string::npos) << e.what();
-    }
+    EXPECT_EQ(test::loadSceneText(R"({"render": {"shading": "doom"}})").render.shading, std::string("doom"));
+    EXPECT_FALSE(test::loadSceneText(R"({"render": {"msaa": 4}})").render.shading);
+    const std::string error = test::sceneError(R"({"render": {"shading": "quake"}})");
+    EXPECT_NE(error.find("render.shading"), std::string::npos) << error;
 }
