@@ -405,7 +405,7 @@ struct Renderer::Impl {
         std::stable_sort(blended.begin(), blended.end(), [](const Blended& a, const Blended& b) { return a.depth < b.depth; });
         for (const Blended& b : blended) draw(*b.item, true);
         // Blended billboards after the blended surfaces (sorted apart from them), gizmos last.
-        stats.triangles += billboards.drawBlended(state, view, height, settings.gizmos ? &lights : nullptr);
+        stats.triangles += billboards.drawBlended(state, view, height, settings.gizmos ? &lights : nullptr, settings.selectedLight);
     }
 };
 

@@ -64,7 +64,8 @@ struct FrameSettings {
     scene::MaterialShading materialOverride;
     glm::vec3 background{0.0f};            ///< radiance behind the scene, cd/m²
     glm::vec3 ambient{0.0f};               ///< constant ambient radiance for the diffuse lobe
-    bool gizmos = false;                   ///< draw every light as a disc in its colour (BillboardPass)
+    bool gizmos = false;                   ///< draw every light as a disc in its colour, with rods for directions and cones (BillboardPass)
+    int selectedLight = -1;                ///< the light whose gizmo is drawn larger (a viewer's selection); -1 = none
     EnvironmentView environment;
     /// Multiple-scattering compensation of the specular lobe (punctual and image-based light).
     /// Off = exactly the glTF BRDF for punctual lights.
