@@ -213,6 +213,16 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
     }
     if (a == "material-roughness") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Roughness, glm::vec4(w.number(2))); return 0; }
     if (a == "material-metallic") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Metallic, glm::vec4(w.number(2))); return 0; }
+    if (a == "material-emissive") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Emissive, glm::vec4(w.vec3(2), 0.0f)); return 0; }
+    if (a == "material-ior") { viewer.setMaterialIor(w.integer(1), w.number(2)); return 0; }
+    if (a == "material-ks") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::PhongSpecular, glm::vec4(w.vec3(2), 0.0f)); return 0; }
+    if (a == "material-shininess") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Shininess, glm::vec4(w.number(2))); return 0; }
+    if (a == "material-sector-light") {
+        const float level = w.number(2);
+        if (level < 0.0f || level > 255.0f) throw Error("a sector light level is 0 to 255 (got {})", level);
+        viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::SectorLight, glm::vec4(level));
+        return 0;
+    }
     // Frame settings.
     if (a == "toggle") {
         bool* flag = toggleTarget(viewer, w.text(1));
@@ -266,7 +276,22 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         return 0;
     }
     if (a == "reload-shaders") { viewer.reloadShaders(); return 0; }
+    if (a == "poll-shaders") {
+        // What the interactive viewer does twice a second: reload if a shader file changed.
+        if (!viewer.reloadChangedShaders()) log::info("shader files unchanged");
+        return 0;
+    }
+    if (a == "copy-file") {
+        // As an editor saving a file: lets a script change a shader between frames.
+        std::filesystem::copy_file(w.text(1), w.text(2), std::filesystem::copy_options::overwrite_existing);
+        return 0;
+    }
     if (a == "screenshot") { viewer.screenshot(w.text(1)); return 0; }
+    if (a == "screenshot-window") {
+        // The window as shown, panels included: needs a frame drawn with the UI.
+        viewer.screenshotWindow(w.text(1));
+        return 1;
+    }
     throw Error("unknown action '{}'", a);
 }
 

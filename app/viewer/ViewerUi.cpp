@@ -14,7 +14,8 @@
 
 #include "Viewer.h"
 #include "core/Error.h"
-#include "render/Brdf.h"
+#include "render/BrdfPlot.h"
+#include "render/ShadingVariant.h"
 
 namespace specula::viewer {
 
@@ -227,61 +228,87 @@ void materialsPanel(Viewer& viewer)
         ImGui::TextDisabled("%s", kSlots[k]);
         ImGui::EndGroup();
     }
-    if (m >= int(materials.size())) return;
-    scene::Material& mat = materials[size_t(m)];
-    glm::vec4 color = mat.baseColorFactor;
-    if (ImGui::ColorEdit4("base colour", &color.x))
-        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::BaseColor, color); });
-    float metallic = mat.metallicFactor, roughness = mat.roughnessFactor, shininess = mat.shininess;
-    if (ImGui::SliderFloat("metallic", &metallic, 0.0f, 1.0f))
-        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::Metallic, glm::vec4(metallic)); });
-    if (ImGui::SliderFloat("roughness (perceptual)", &roughness, 0.0f, 1.0f))
-        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::Roughness, glm::vec4(roughness)); });
-    glm::vec3 emissive = mat.emissiveFactor * mat.emissiveStrength;
-    if (ImGui::DragFloat3("emissive (cd/m2)", &emissive.x, 0.01f, 0.0f, 1e5f))
-        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::Emissive, glm::vec4(emissive, 0.0f)); });
-    if (ImGui::DragFloat("shininess (0 = from roughness)", &shininess, 0.5f, 0.0f, 1e4f))
-        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::Shininess, glm::vec4(shininess)); });
+    // Parameters as the renderer's record holds them (the default material's too); each edit
+    // rewrites that field's bytes only (Renderer::setMaterialParameter).
+    using render::MaterialParameter;
+    auto value = [&](MaterialParameter p) { return renderer.materialParameter(m, p); };
+    auto set = [&](MaterialParameter p, const glm::vec4& v) { guarded(viewer, [&] { viewer.setMaterialParameter(m, p, v); }); };
+    glm::vec4 color = value(MaterialParameter::BaseColor);
+    if (ImGui::ColorEdit4("base colour", &color.x)) set(MaterialParameter::BaseColor, color);
+    float metallic = value(MaterialParameter::Metallic).x, roughness = value(MaterialParameter::Roughness).x;
+    if (ImGui::SliderFloat("metallic", &metallic, 0.0f, 1.0f)) set(MaterialParameter::Metallic, glm::vec4(metallic));
+    if (ImGui::SliderFloat("roughness (perceptual)", &roughness, 0.0f, 1.0f)) set(MaterialParameter::Roughness, glm::vec4(roughness));
+    glm::vec3 emissive = glm::vec3(value(MaterialParameter::Emissive));
+    if (ImGui::DragFloat3("emissive (cd/m2)", &emissive.x, 0.01f, 0.0f, 1e5f)) set(MaterialParameter::Emissive, glm::vec4(emissive, 0.0f));
+    {
+        const scene::Material& plain = viewer.material(m);
+        float ior = plain.ior.value_or(1.5f);
+        if (ImGui::DragFloat("IOR", &ior, 0.005f, 1.0f, 4.0f, plain.ior ? "%.3f" : "%.3f (unset: F0 0.04)"))
+            guarded(viewer, [&] { viewer.setMaterialIor(m, std::max(ior, 1.0f)); });
+        const float f0 = 0.04f * value(MaterialParameter::SpecularColor).y * value(MaterialParameter::SpecularFactor).x;
+        ImGui::SameLine();
+        ImGui::TextDisabled("F0 %.3f", f0);
+    }
+    ImGui::Separator();
+    ImGui::TextDisabled("Phong, Blinn-Phong, Gouraud, flat");
+    glm::vec4 ks = value(MaterialParameter::PhongSpecular);
+    if (ImGui::ColorEdit3("specular ks", &ks.x)) set(MaterialParameter::PhongSpecular, ks);
+    float shininess = value(MaterialParameter::Shininess).x;
+    if (ImGui::DragFloat("shininess (0 = from roughness)", &shininess, 0.5f, 0.0f, 1e4f)) set(MaterialParameter::Shininess, glm::vec4(shininess));
+    ImGui::Separator();
+    ImGui::TextDisabled("Doom");
+    int sector = int(std::lround(value(MaterialParameter::SectorLight).x));
+    if (ImGui::SliderInt("sector light", &sector, 0, 255)) set(MaterialParameter::SectorLight, glm::vec4(float(sector)));
 }
 
 void brdfPanel(Viewer& viewer)
 {
     if (!ImGui::CollapsingHeader("BRDF explorer")) return;
-    const std::vector<scene::Material>& materials = viewer.document().scene.materials;
+    render::Renderer& renderer = viewer.renderer();
     const int m = viewer.selectedMaterial;
-    const scene::Material mat = m >= 0 && m < int(materials.size()) ? materials[size_t(m)] : scene::Material{};
+    if (m < 0 || m >= renderer.materialCount()) return;
     float& viewDegrees = viewer.brdfViewDegrees;
     ImGui::SliderFloat("view angle", &viewDegrees, 0.0f, 89.0f, "%.0f deg");
-    // The plane of incidence: light from -89° to 89° on the far side of the normal from the view
-    // (the mirror direction is at +view angle). Factors only: textures are not sampled.
-    render::brdf::Surface surface;
-    surface.baseColor = glm::dvec3(glm::vec3(mat.baseColorFactor));
-    surface.metallic = mat.metallicFactor;
-    surface.perceptualRoughness = std::max<double>(mat.roughnessFactor, render::brdf::kMinPerceptualRoughness);
-    surface.specularFactor = mat.specularFactor;
-    const double alpha = surface.perceptualRoughness * surface.perceptualRoughness;
-    const glm::dvec3 f0 = glm::mix(glm::dvec3(0.04 * mat.specularFactor), surface.baseColor, surface.metallic);
-    constexpr int kSamples = 90;
-    float d[kSamples], v[kSamples], f[kSamples], whole[kSamples];
-    const glm::dvec3 n(0, 0, 1);
-    const double thetaV = glm::radians(double(viewDegrees));
-    const glm::dvec3 view(-std::sin(thetaV), 0.0, std::cos(thetaV));
-    auto luminance = [](const glm::dvec3& c) { return float(0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b); };
-    for (int k = 0; k < kSamples; ++k) {
-        const double thetaL = glm::radians(-89.0 + 178.0 * k / (kSamples - 1));
-        const glm::dvec3 l(std::sin(thetaL), 0.0, std::cos(thetaL));
-        const glm::dvec3 h = glm::normalize(l + view);
-        const double NoV = std::max(glm::dot(n, view), 1e-4), NoL = std::max(glm::dot(n, l), 1e-4);
-        d[k] = float(render::brdf::D_GGX(std::max(h.z, 0.0), alpha));
-        v[k] = float(render::brdf::V_SmithGGX(NoV, NoL, alpha));
-        f[k] = luminance(render::brdf::F_Schlick(f0, std::max(glm::dot(view, h), 0.0)));
-        whole[k] = luminance(render::brdf::evaluate(surface, n, view, l)) * float(NoL);
+    // The selected material's factors as the shader reads them, and its shading resolved as a
+    // draw resolves it (the frame's override, the material's choice, the frame's defaults).
+    using render::MaterialParameter;
+    auto value = [&](MaterialParameter p) { return renderer.materialParameter(m, p); };
+    render::BrdfPlotMaterial material;
+    material.baseColor = glm::dvec3(glm::vec3(value(MaterialParameter::BaseColor)));
+    material.metallic = value(MaterialParameter::Metallic).x;
+    material.perceptualRoughness = value(MaterialParameter::Roughness).x;
+    material.specularColor = glm::dvec3(glm::vec3(value(MaterialParameter::SpecularColor)));
+    material.specularFactor = value(MaterialParameter::SpecularFactor).x;
+    material.phongSpecular = glm::dvec3(glm::vec3(value(MaterialParameter::PhongSpecular)));
+    material.shininess = value(MaterialParameter::Shininess).x;
+    const render::FrameSettings& settings = viewer.settings();
+    const render::ResolvedShading shading =
+        render::resolveShading(settings.materialOverride, settings.brdfGeometry, render::packShading(renderer.materialShading(m)));
+    const render::BrdfCurves curves = render::sampleBrdfCurves(material, shading, viewDegrees);
+    const int n = int(curves.whole.size());
+    ImGui::TextDisabled("material %d, factors only (textures are not sampled)", m);
+    ImGui::TextDisabled("x: light angle -89..89 deg; mirror direction at +%.0f", viewDegrees);
+    switch (curves.kind) {
+    case render::BrdfPlotKind::None:
+        ImGui::TextWrapped("%s shading does not depend on the light's direction: nothing to plot.", scene::shadingModelName(shading.model));
+        break;
+    case render::BrdfPlotKind::Classic: {
+        const bool blinn = shading.model == scene::ShadingModel::BlinnPhong;
+        ImGui::Text("%s: %s, n = %.0f", scene::shadingModelName(shading.model), blinn ? "(N.H)^n" : "(R.V)^n", curves.shininess);
+        ImGui::PlotLines(blinn ? "(N.H)^n" : "(R.V)^n", curves.d.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        ImGui::PlotLines("(kd NoL + ks lobe)/pi", curves.whole.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        break;
     }
-    ImGui::TextDisabled("GGX, Smith-GGX, Schlick; x = light angle -89..89 deg");
-    ImGui::PlotLines("D", d, kSamples, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
-    ImGui::PlotLines("V = G/(4 NoL NoV)", v, kSamples, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
-    ImGui::PlotLines("F (luminance)", f, kSamples, 0, nullptr, 0.0f, 1.0f, ImVec2(0, 60));
-    ImGui::PlotLines("f x NoL", whole, kSamples, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+    case render::BrdfPlotKind::Microfacet:
+        ImGui::Text("D %s, G %s, F %s, diffuse %s", scene::brdfDistributionName(shading.distribution),
+                    scene::brdfGeometryName(shading.geometry), scene::brdfFresnelName(shading.fresnel),
+                    scene::brdfDiffuseName(shading.diffuse));
+        ImGui::PlotLines("D", curves.d.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        ImGui::PlotLines("V = G/(4 NoL NoV)", curves.v.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        ImGui::PlotLines("F (luminance)", curves.f.data(), n, 0, nullptr, 0.0f, 1.0f, ImVec2(0, 60));
+        ImGui::PlotLines("f x NoL", curves.whole.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        break;
+    }
 }
 
 void environmentPanel(Viewer& viewer)

@@ -51,6 +51,7 @@ struct Surface {
     Fresnel fresnel = Fresnel::Schlick;
     Diffuse diffuse = Diffuse::Lambert;
     double f0Dielectric = 0.04;  ///< scene::f0FromIor(ior) when the material gives an ior
+    dvec3 specularColor{1.0};    ///< KHR_materials_specular colour: dielectric F0 = min(f0Dielectric × it, 1) × specularFactor
 };
 
 /// f(l, v) (1/sr) for unit n, v, l, not multiplied by NoL. Zero when NoL <= 0.

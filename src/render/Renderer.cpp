@@ -164,7 +164,14 @@ struct Renderer::Impl {
             timer = &timers[name];
             timer->begin();
         }
-        body();
+        try {
+            body();
+        } catch (...) {
+            // A program that fails to compile on first use: the query must not stay active
+            // into the next frame (the debug group closes itself).
+            if (timer) timer->end();
+            throw;
+        }
         if (timer) {
             timer->end();
             if (wallClock) gl::finish();
@@ -715,6 +722,9 @@ glm::vec4 Renderer::materialParameter(int material, MaterialParameter parameter)
     case MaterialParameter::Roughness: return glm::vec4(r.params.y, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::PhongSpecular: return glm::vec4(glm::vec3(r.phong), 0.0f);
     case MaterialParameter::Shininess: return glm::vec4(r.phong.w, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::SpecularColor: return glm::vec4(glm::vec3(r.specular), 0.0f);
+    case MaterialParameter::SpecularFactor: return glm::vec4(r.specular.w, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::SectorLight: return glm::vec4(r.emissive.w * 255.0f, 0.0f, 0.0f, 0.0f);
     }
     return glm::vec4(0.0f);
 }
@@ -745,6 +755,18 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::Shininess: {
         const glm::vec4 v(value.x);
         gpu.writeMaterial(material, offsetof(GpuMaterial, phong) + 3 * sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::SpecularColor: write(offsetof(GpuMaterial, specular), 0, 3); break;
+    case MaterialParameter::SpecularFactor: {
+        const glm::vec4 v(value.x);
+        gpu.writeMaterial(material, offsetof(GpuMaterial, specular) + 3 * sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::SectorLight: {
+        // The record holds level / 255 (GpuScene); the shader scales it back.
+        const glm::vec4 v(std::clamp(value.x, 0.0f, 255.0f) / 255.0f);
+        gpu.writeMaterial(material, offsetof(GpuMaterial, emissive) + 3 * sizeof(float), sizeof(float), &v.x);
         break;
     }
     }
