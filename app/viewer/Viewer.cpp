@@ -168,9 +168,15 @@ void Viewer::captureWindow()
     for (int y = 0; y < size.y; ++y)
         std::copy_n(pixels.begin() + ptrdiff_t(size_t(size.y - 1 - y) * row), row, image.pixels.begin() + ptrdiff_t(size_t(y) * row));
     for (size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 255;
-    writePng(path, image);
-    lastMessage = "window screenshot: " + std::filesystem::absolute(path).string();
-    log::info("{}", lastMessage);
+    try {
+        writePng(path, image);
+        lastMessage = "window screenshot: " + std::filesystem::absolute(path).string();
+        log::info("{}", lastMessage);
+    } catch (const std::exception& e) {
+        // Mid-frame, from a key or a script: the UI shows it (a script can expect-no-error).
+        lastError = e.what();
+        log::warn("{}", lastError);
+    }
 }
 
 bool Viewer::reloadShaders()
@@ -327,7 +333,7 @@ int Viewer::pickMaterial(float x, float y)
     // The renderer's registry puts the glTF default material after the scene's.
     selectedMaterial = hit->material >= 0 ? hit->material : int(mDocument.scene.materials.size());
     lastMessage = "picked material " + std::to_string(selectedMaterial);
-    openMaterialsPanel = true;
+    panelRequests["Materials"] = true;
     log::info("{} (node {}, mesh {})", lastMessage, hit->node, hit->mesh);
     return selectedMaterial;
 }

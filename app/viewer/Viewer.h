@@ -3,6 +3,7 @@
 // render::Renderer's; this class only decides what to render and with which settings.
 #include <array>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -113,7 +114,9 @@ public:
     int selectedMaterial = 0;
     bool showUi = true;
     bool flyMode = false;
-    bool openMaterialsPanel = false; ///< a pick opens the Materials panel on the next frame
+    /// Panels to open (true) or close on the next frame, by header name ("Materials"): a pick
+    /// opens the Materials panel, scripts arrange the panels for screenshots.
+    std::map<std::string, bool> panelRequests;
     bool gpuTiming = true;
     std::string lastError;   ///< shown in the UI until dismissed
     std::string lastMessage; ///< e.g. where a screenshot went

@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "Viewer.h"
@@ -273,6 +274,25 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         const int width = w.integer(1), height = w.integer(2);
         if (width < 1 || height < 1) throw Error("resize wants a positive width and height");
         glfwSetWindowSize(static_cast<GLFWwindow*>(viewer.context().nativeWindow()), width, height);
+        return 0;
+    }
+    if (a == "panel") {
+        // panel NAME open|closed: arranges the panels (for screenshots with the UI).
+        static const std::map<std::string, std::string> kPanels = {
+            {"statistics", "Statistics"}, {"scene", "Scene"}, {"lights", "Lights"}, {"materials", "Materials"},
+            {"brdf", "BRDF explorer"}, {"environment", "Environment"}, {"post", "Post-processing"}};
+        const auto panel = kPanels.find(w.text(1));
+        if (panel == kPanels.end()) throw Error("no panel '{}' (statistics, scene, lights, materials, brdf, environment, post)", w.text(1));
+        if (w.text(2) != "open" && w.text(2) != "closed") throw Error("panel wants open or closed (got '{}')", w.text(2));
+        viewer.panelRequests[panel->second] = w.text(2) == "open";
+        return 0;
+    }
+    if (a == "log-stats") {
+        // What the Statistics panel shows of the last frame, as one line.
+        const render::FrameStats& stats = viewer.renderer().stats();
+        std::string passes;
+        for (const render::PassTiming& pass : stats.passes) passes += fmt::format(", {} {:.3f} ms", pass.name, pass.gpuMs);
+        log::info("frame stats: {} draw calls, {} triangles{}", stats.drawCalls, stats.triangles, passes);
         return 0;
     }
     if (a == "reload-shaders") { viewer.reloadShaders(); return 0; }

@@ -49,6 +49,16 @@ void guarded(Viewer& viewer, Action&& action)
     }
 }
 
+/// A panel's collapsing header, opened or closed first if a pick or a script asked.
+bool panelHeader(Viewer& viewer, const char* name, ImGuiTreeNodeFlags flags = 0)
+{
+    if (const auto request = viewer.panelRequests.find(name); request != viewer.panelRequests.end()) {
+        ImGui::SetNextItemOpen(request->second);
+        viewer.panelRequests.erase(request);
+    }
+    return ImGui::CollapsingHeader(name, flags);
+}
+
 void drawNode(const scene::Scene& scene, int index)
 {
     const scene::Node& node = scene.nodes[size_t(index)];
@@ -64,7 +74,7 @@ void drawNode(const scene::Scene& scene, int index)
 
 void statisticsPanel(Viewer& viewer)
 {
-    if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!panelHeader(viewer, "Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::Text("%.1f FPS (%.2f ms)", io.Framerate, 1000.0f / std::max(io.Framerate, 1e-3f));
     ImGui::PlotLines("frame ms", viewer.frameTimes.data(), int(viewer.frameTimes.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 50));
@@ -84,7 +94,7 @@ void statisticsPanel(Viewer& viewer)
 
 void scenePanel(Viewer& viewer)
 {
-    if (!ImGui::CollapsingHeader("Scene")) return;
+    if (!panelHeader(viewer, "Scene")) return;
     const scene::Scene& scene = viewer.document().scene;
     ImGui::Text("%s: %zu meshes, %zu materials, %zu triangles", viewer.sceneName().c_str(), scene.meshes.size(),
                 scene.materials.size(), scene.triangleCount());
@@ -108,7 +118,7 @@ void scenePanel(Viewer& viewer)
 
 void lightsPanel(Viewer& viewer)
 {
-    if (!ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!panelHeader(viewer, "Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
     render::LightBuffer& lights = viewer.renderer().lights();
     if (ImGui::Button("+ point")) guarded(viewer, [&] { viewer.addLight(scene::Light::Type::Point); });
     ImGui::SameLine();
@@ -133,7 +143,7 @@ void lightsPanel(Viewer& viewer)
                                 &l.light.intensity, 0.05f * std::max(l.light.intensity, 1.0f), 0.0f, 1e6f, "%.3f");
     if (l.light.type != scene::Light::Type::Directional) {
         changed |= ImGui::DragFloat3("position", &l.position.x, 0.01f);
-        changed |= ImGui::DragFloat("range (0 = infinite)", &l.light.range, 0.05f, 0.0f, 1e4f);
+        changed |= ImGui::DragFloat("range (0 = none)", &l.light.range, 0.05f, 0.0f, 1e4f);
     }
     if (l.light.type != scene::Light::Type::Point) changed |= ImGui::DragFloat3("direction", &l.direction.x, 0.01f, -1.0f, 1.0f);
     if (l.light.type == scene::Light::Type::Spot) {
@@ -178,9 +188,7 @@ bool termCombo(const char* label, std::optional<Enum>& value, int count, const c
 
 void materialsPanel(Viewer& viewer)
 {
-    if (viewer.openMaterialsPanel) ImGui::SetNextItemOpen(true);
-    viewer.openMaterialsPanel = false;
-    if (!ImGui::CollapsingHeader("Materials")) return;
+    if (!panelHeader(viewer, "Materials")) return;
     ImGui::TextDisabled("click on an object to pick its material");
     render::Renderer& renderer = viewer.renderer();
     std::vector<scene::Material>& materials = viewer.document().scene.materials;
@@ -210,7 +218,7 @@ void materialsPanel(Viewer& viewer)
     scene::MaterialShading terms = shading;
     bool termsChanged = false;
     termsChanged |= termCombo("D (distribution)", terms.distribution, 3, scene::brdfDistributionName);
-    termsChanged |= termCombo("G (masking-shadowing)", terms.geometry, 7, scene::brdfGeometryName);
+    termsChanged |= termCombo("G (masking)", terms.geometry, 7, scene::brdfGeometryName);
     termsChanged |= termCombo("F (Fresnel)", terms.fresnel, 3, scene::brdfFresnelName);
     termsChanged |= termCombo("diffuse", terms.diffuse, 3, scene::brdfDiffuseName);
     if (termsChanged) guarded(viewer, [&] { viewer.setMaterialShading(m, terms); });
@@ -237,7 +245,7 @@ void materialsPanel(Viewer& viewer)
     if (ImGui::ColorEdit4("base colour", &color.x)) set(MaterialParameter::BaseColor, color);
     float metallic = value(MaterialParameter::Metallic).x, roughness = value(MaterialParameter::Roughness).x;
     if (ImGui::SliderFloat("metallic", &metallic, 0.0f, 1.0f)) set(MaterialParameter::Metallic, glm::vec4(metallic));
-    if (ImGui::SliderFloat("roughness (perceptual)", &roughness, 0.0f, 1.0f)) set(MaterialParameter::Roughness, glm::vec4(roughness));
+    if (ImGui::SliderFloat("roughness", &roughness, 0.0f, 1.0f)) set(MaterialParameter::Roughness, glm::vec4(roughness));
     glm::vec3 emissive = glm::vec3(value(MaterialParameter::Emissive));
     if (ImGui::DragFloat3("emissive (cd/m2)", &emissive.x, 0.01f, 0.0f, 1e5f)) set(MaterialParameter::Emissive, glm::vec4(emissive, 0.0f));
     {
@@ -254,7 +262,7 @@ void materialsPanel(Viewer& viewer)
     glm::vec4 ks = value(MaterialParameter::PhongSpecular);
     if (ImGui::ColorEdit3("specular ks", &ks.x)) set(MaterialParameter::PhongSpecular, ks);
     float shininess = value(MaterialParameter::Shininess).x;
-    if (ImGui::DragFloat("shininess (0 = from roughness)", &shininess, 0.5f, 0.0f, 1e4f)) set(MaterialParameter::Shininess, glm::vec4(shininess));
+    if (ImGui::DragFloat("shininess (0: auto)", &shininess, 0.5f, 0.0f, 1e4f)) set(MaterialParameter::Shininess, glm::vec4(shininess));
     ImGui::Separator();
     ImGui::TextDisabled("Doom");
     int sector = int(std::lround(value(MaterialParameter::SectorLight).x));
@@ -263,7 +271,7 @@ void materialsPanel(Viewer& viewer)
 
 void brdfPanel(Viewer& viewer)
 {
-    if (!ImGui::CollapsingHeader("BRDF explorer")) return;
+    if (!panelHeader(viewer, "BRDF explorer")) return;
     render::Renderer& renderer = viewer.renderer();
     const int m = viewer.selectedMaterial;
     if (m < 0 || m >= renderer.materialCount()) return;
@@ -294,9 +302,10 @@ void brdfPanel(Viewer& viewer)
         break;
     case render::BrdfPlotKind::Classic: {
         const bool blinn = shading.model == scene::ShadingModel::BlinnPhong;
-        ImGui::Text("%s: %s, n = %.0f", scene::shadingModelName(shading.model), blinn ? "(N.H)^n" : "(R.V)^n", curves.shininess);
-        ImGui::PlotLines(blinn ? "(N.H)^n" : "(R.V)^n", curves.d.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
-        ImGui::PlotLines("(kd NoL + ks lobe)/pi", curves.whole.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        ImGui::Text("%s: lobe %s, n = %.0f", scene::shadingModelName(shading.model), blinn ? "(N.H)^n" : "(R.V)^n", curves.shininess);
+        ImGui::TextDisabled("f x NoL = (kd NoL + ks lobe) / pi");
+        ImGui::PlotLines("lobe", curves.d.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        ImGui::PlotLines("f x NoL", curves.whole.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
         break;
     }
     case render::BrdfPlotKind::Microfacet:
@@ -313,7 +322,7 @@ void brdfPanel(Viewer& viewer)
 
 void environmentPanel(Viewer& viewer)
 {
-    if (!ImGui::CollapsingHeader("Environment")) return;
+    if (!panelHeader(viewer, "Environment")) return;
     render::EnvironmentView& e = viewer.settings().environment;
     ImGui::Text("file: %s", viewer.environmentName().empty() ? "(none)" : viewer.environmentName().c_str());
     std::array<char, 512>& path = viewer.environmentInput;
@@ -330,7 +339,7 @@ void environmentPanel(Viewer& viewer)
 
 void postPanel(Viewer& viewer)
 {
-    if (!ImGui::CollapsingHeader("Post-processing", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!panelHeader(viewer, "Post-processing", ImGuiTreeNodeFlags_DefaultOpen)) return;
     render::FrameSettings& s = viewer.settings();
     ImGui::SliderFloat("exposure (EV)", &s.exposureEv, -10.0f, 10.0f);
     if (ImGui::BeginCombo("tone mapper", render::tonemapName(s.tonemap))) {
@@ -421,7 +430,11 @@ void handleInput(Viewer& viewer, float deltaSeconds)
         camera.frame(viewer.document().scene.worldBounds());
     }
     if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) viewer.resetCamera();
-    if (ImGui::IsKeyPressed(GLFW_KEY_P, false) || ImGui::IsKeyPressed(GLFW_KEY_F12, false)) takeScreenshot(viewer);
+    if (ImGui::IsKeyPressed(GLFW_KEY_P, false) || ImGui::IsKeyPressed(GLFW_KEY_F12, false)) {
+        // Shift: the window as shown, panels included (written at the end of this frame).
+        if (io.KeyShift) viewer.screenshotWindow(timestampedScreenshotName());
+        else takeScreenshot(viewer);
+    }
     if (ImGui::IsKeyPressed(GLFW_KEY_H, false) || ImGui::IsKeyPressed(GLFW_KEY_TAB, false)) viewer.showUi = !viewer.showUi;
     if (ImGui::IsKeyPressed(GLFW_KEY_F5, false)) viewer.reloadShaders();
     if (ImGui::IsKeyPressed(GLFW_KEY_C, false)) viewer.flyMode = !viewer.flyMode;
@@ -460,7 +473,8 @@ void drawUi(Viewer& viewer)
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(420, std::max(300.0f, ImGui::GetIO().DisplaySize.y - 20.0f)), ImGuiCond_FirstUseEver);
     ImGui::Begin("Specula");
-    ImGui::TextDisabled("F frame  R reset  P screenshot  H hide UI  F5 reload shaders  C fly");
+    ImGui::TextDisabled("F frame  R reset camera  C fly camera  H hide UI");
+    ImGui::TextDisabled("P screenshot (Shift+P: with panels)  F5 reload shaders");
     if (!viewer.lastMessage.empty()) ImGui::TextWrapped("%s", viewer.lastMessage.c_str());
     statisticsPanel(viewer);
     scenePanel(viewer);

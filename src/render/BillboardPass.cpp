@@ -44,7 +44,7 @@ LightGizmos makeLightGizmos(const std::vector<PlacedLight>& lights, const scene:
     rods.size = glm::vec2(kGizmoRodPixels, 1.0f);
     rods.sizeInPixels = true;
     rods.anchor = glm::vec2(0.5f, 0.0f); // from the light outwards
-    rods.tint = glm::vec3(kGizmoRadiance);
+    rods.tint = glm::vec3(kGizmoRodRadiance);
     rods.alphaMode = scene::AlphaMode::Blend;
     rods.sprite = scene::BuiltinSprite::Bar;
 

@@ -29,8 +29,10 @@ namespace specula::render {
 /// (cd/m²; bright enough to read as a light and to bloom, whatever the light's intensity).
 constexpr float kGizmoSizePixels = 24.0f;
 constexpr float kGizmoRadiance = 6.0f;
-/// Rods (direction, cone edges): lines this many pixels wide.
+/// Rods (direction, cone edges): lines this many pixels wide, emitting the light's colour × this
+/// radiance: dimmer than the discs, so that tone mapping keeps their hue and they bloom less.
 constexpr float kGizmoRodPixels = 2.0f;
+constexpr float kGizmoRodRadiance = 2.0f;
 /// Rods along a spot light's outer cone, and (dimmer, kGizmoInnerConeTint) its inner cone.
 constexpr int kGizmoOuterConeRods = 8;
 constexpr int kGizmoInnerConeRods = 4;
@@ -40,14 +42,13 @@ constexpr float kGizmoSelectedScale = 1.6f;
 /// At most this many gizmo billboards per light (a spot light's disc and rods).
 constexpr int kGizmoBillboardsPerLight = 2 + kGizmoOuterConeRods + kGizmoInnerConeRods;
 
-/// The light gizmos as two blended billboard groups, tinted with each light's colour ×
-/// kGizmoRadiance.
-/// - discs: a point sprite per light, kGizmoSizePixels across. Point and spot lights sit at
+/// The light gizmos as two blended billboard groups, tinted with each light's colour.
+/// - discs: a point sprite per light, kGizmoSizePixels across, × kGizmoRadiance. Point and spot lights sit at
 ///   their position; a directional light has none, so its disc sits where its light comes
 ///   from, on the bounding sphere of `sceneBounds` (centre − direction × radius; radius 1
 ///   around the origin for empty bounds).
 /// - rods: arbitrary-axis billboards spanning their axis (BillboardGroup::spanAxis),
-///   kGizmoRodPixels wide. A directional light's runs from its disc along its direction to
+///   kGizmoRodPixels wide, × kGizmoRodRadiance. A directional light's runs from its disc along its direction to
 ///   the centre (length = radius). A spot light has one along its direction and
 ///   kGizmoOuterConeRods along the edges of its outer cone, kGizmoInnerConeRods (dimmer) along
 ///   its inner cone, all from its position, as long as its range, or without one as far as

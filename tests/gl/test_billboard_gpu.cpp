@@ -449,7 +449,7 @@ TEST_F(GlTest, LightGizmoRodsShowDirectionAndCone)
 
     // Lit = more than a third of the rod's radiance (the bar sprite's soft sides are fainter);
     // the inner cone's rods (kGizmoInnerConeTint) stay below that.
-    const float threshold = render::kGizmoRadiance * spot.color.g / 3.0f;
+    const float threshold = render::kGizmoRodRadiance * spot.color.g / 3.0f;
     ASSERT_LT(render::kGizmoInnerConeTint, 1.0f / 3.0f);
     const float discRadius = 0.5f * render::kGizmoSizePixels + 1.0f;
     const glm::vec2 a = project(apex, view, kW, kH);
@@ -458,7 +458,7 @@ TEST_F(GlTest, LightGizmoRodsShowDirectionAndCone)
     const float t0 = discRadius / glm::distance(a, end);
     EXPECT_GT(litAlong(image, a, end, t0, 0.97f, threshold), 0.95f) << "no rod along the light's direction";
     EXPECT_LT(greenNear(image, glm::mix(a, end, 1.06f), 1), threshold) << "the direction rod is longer than the range";
-    // Gizmo-coloured: the light's colour x kGizmoRadiance where the rod is solid.
+    // Gizmo-coloured: the light's colour x kGizmoRodRadiance x the sprite's cover.
     const glm::vec3 mid = radianceAt(image, glm::mix(a, end, 0.5f));
     EXPECT_GT(mid.g, threshold);
     EXPECT_NEAR(mid.r / mid.g, spot.color.r / spot.color.g, 0.02f);

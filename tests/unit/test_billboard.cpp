@@ -319,6 +319,7 @@ TEST(Billboard, LightGizmos)
     EXPECT_EQ(rods.size.x, render::kGizmoRodPixels);
     EXPECT_EQ(rods.anchor, glm::vec2(0.5f, 0.0f)); // each rod starts at its position
     EXPECT_EQ(rods.sprite, scene::BuiltinSprite::Bar);
+    EXPECT_EQ(rods.tint, glm::vec3(render::kGizmoRodRadiance));
     // The point light has none; the spot light its cones and its direction; the directional one
     // its direction.
     ASSERT_EQ(rods.billboards.size(), size_t(render::kGizmoInnerConeRods + render::kGizmoOuterConeRods + 1 + 1));
