@@ -9,7 +9,6 @@
 
 #include <chrono>
 #include <filesystem>
-#include <map>
 #include <optional>
 #include <utility>
 
@@ -21,7 +20,6 @@
 #include "core/Log.h"
 #include "core/Timer.h"
 #include "gl/Debug.h"
-#include "gl/Program.h"
 #include "gl/State.h"
 #include "platform/Context.h"
 
@@ -50,17 +48,6 @@ public:
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 };
-
-/// Modification times of every shader file, to notice edits (hot reload).
-std::map<std::filesystem::path, std::filesystem::file_time_type> shaderTimes()
-{
-    std::map<std::filesystem::path, std::filesystem::file_time_type> times;
-    std::error_code error;
-    for (auto it = std::filesystem::recursive_directory_iterator(gl::shaderRoot(), error);
-         !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error))
-        if (it->is_regular_file(error)) times[it->path()] = it->last_write_time(error);
-    return times;
-}
 
 } // namespace
 
@@ -100,7 +87,6 @@ int runView(const ViewArgs& args)
         for (int i = 0; i < count; ++i) files->emplace_back(paths[i]);
     });
 
-    auto watched = shaderTimes();
     Stopwatch watchClock;
     auto last = std::chrono::steady_clock::now();
     int framesLeft = script ? script->runUntilFrames(viewer) : 0;
@@ -114,12 +100,9 @@ int runView(const ViewArgs& args)
         for (const std::string& path : std::exchange(dropped, {})) viewer.openFile(path);
         if (interactive && watchClock.elapsedMs() > 500.0) {
             // Hot reload: a changed shader file rebuilds the programs; errors show in the UI.
+            // Scripts poll with `poll-shaders`, which runs the same check.
             watchClock.reset();
-            auto now = shaderTimes();
-            if (now != watched) {
-                watched = std::move(now);
-                viewer.reloadShaders();
-            }
+            viewer.reloadChangedShaders();
         }
 
         const auto now = std::chrono::steady_clock::now();
@@ -136,6 +119,7 @@ int runView(const ViewArgs& args)
         viewer.renderFrame(delta);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         viewer.renderer().state().reset(); // ImGui's backend changed GL state behind the cache
+        viewer.captureWindow();
         context->swapBuffers();
         ++frameCount;
 

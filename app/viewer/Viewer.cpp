@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <utility>
 
 #include "core/Error.h"
 #include "core/ImageIO.h"
@@ -9,6 +11,8 @@
 #include "core/ProcessClock.h"
 #include "core/Timer.h"
 #include "gl/Debug.h"
+#include "gl/Framebuffer.h"
+#include "gl/Program.h"
 #include "gl/State.h"
 #include "platform/Context.h"
 #include "scene/Picking.h"
@@ -34,7 +38,7 @@ std::vector<render::PlacedLight> currentLights(const render::LightBuffer& buffer
 } // namespace
 
 Viewer::Viewer(platform::Context& context, const cli::FrameOptions& options)
-    : mContext(context), mOptions(options), mRenderer(std::make_unique<render::Renderer>())
+    : mContext(context), mOptions(options), mRenderer(std::make_unique<render::Renderer>()), mShaderWatcher(gl::shaderRoot())
 {
 }
 
@@ -69,6 +73,7 @@ void Viewer::loadScene(const std::string& name)
         mEnvironment = std::move(environment);
     }
     mDocument = std::move(document);
+    mDefaultMaterial = scene::Material{.name = "default"};
     mSceneName = name.empty() ? "demo" : name;
     selectedLight = mRenderer->lights().count() > 0 ? 0 : -1;
     selectedMaterial = 0;
@@ -113,12 +118,24 @@ void Viewer::renderFrame(float deltaSeconds)
     mSettings.width = size.x;
     mSettings.height = size.y;
     mSettings.autoExposure.deltaTime = deltaSeconds;
+    mSettings.selectedLight = selectedLight;
     const float aspect = float(size.x) / float(size.y);
     const render::View view = mSceneCamera >= 0 ? render::cameraView(mDocument.scene, mSceneCamera, aspect) : mCamera.view(aspect);
     mLastView = view;
     mLastSize = glm::vec2(size);
     mRenderer->setGpuTiming(gpuTiming);
-    mRenderer->render(view, mSettings);
+    const int errorsBefore = mDebug ? mDebug->errorCount() : 0;
+    try {
+        mRenderer->render(view, mSettings);
+    } catch (const gl::ShaderError& e) {
+        // A program compiled on first use (a pass or shading model turned on after a reload)
+        // from a file that does not compile: show it and keep the last frame on screen; turning
+        // the setting back, or fixing the file, recovers.
+        if (lastError != e.what()) log::warn("frame not rendered: {}", e.what());
+        lastError = e.what();
+        if (mDebug) mDebug->discardAfter(errorsBefore);
+        mRenderer->state().reset();
+    }
     mRenderer->present(size.x, size.y);
     if (mFirstFrame) {
         mStartup.firstFrame = msSinceProcessStart();
@@ -135,15 +152,51 @@ void Viewer::screenshot(const std::filesystem::path& path)
     log::info("{}", lastMessage);
 }
 
+void Viewer::captureWindow()
+{
+    if (mPendingWindowShot.empty()) return;
+    const std::filesystem::path path = std::exchange(mPendingWindowShot, {});
+    const glm::ivec2 size = mContext.framebufferSize();
+    ImageRGBA8 image;
+    image.width = size.x;
+    image.height = size.y;
+    const std::vector<uint8_t> pixels = gl::readDefaultFramebuffer(size.x, size.y);
+    mRenderer->state().reset(); // the read binding changed behind the cache
+    // GL's first row is the bottom one; files want the top one first. The window has no alpha.
+    const size_t row = size_t(size.x) * 4;
+    image.pixels.resize(pixels.size());
+    for (int y = 0; y < size.y; ++y)
+        std::copy_n(pixels.begin() + ptrdiff_t(size_t(size.y - 1 - y) * row), row, image.pixels.begin() + ptrdiff_t(size_t(y) * row));
+    for (size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 255;
+    try {
+        writePng(path, image);
+        lastMessage = "window screenshot: " + std::filesystem::absolute(path).string();
+        log::info("{}", lastMessage);
+    } catch (const std::exception& e) {
+        // Mid-frame, from a key or a script: the UI shows it (a script can expect-no-error).
+        lastError = e.what();
+        log::warn("{}", lastError);
+    }
+}
+
 bool Viewer::reloadShaders()
 {
     // A fresh renderer compiles every program from the files; the old one keeps running until
     // the new one has compiled all it needs, so a compile error leaves the last good programs.
+    const int errorsBefore = mDebug ? mDebug->errorCount() : 0;
     try {
         auto fresh = std::make_unique<render::Renderer>();
         fresh->setScene(mDocument.scene);
         fresh->lights().setAll(currentLights(mRenderer->lights()));
-        for (int i = 0; i < mRenderer->materialCount(); ++i) fresh->setMaterialShading(i, mRenderer->materialShading(i));
+        // Every material's edits, from the records the old renderer draws with: the default
+        // material's too, and fields plain materials do not hold (the classic ks).
+        for (int i = 0; i < mRenderer->materialCount(); ++i) {
+            fresh->setMaterialShading(i, mRenderer->materialShading(i));
+            for (int p = 0; p < render::kMaterialParameterCount; ++p) {
+                const auto parameter = render::MaterialParameter(p);
+                fresh->setMaterialParameter(i, parameter, mRenderer->materialParameter(i, parameter));
+            }
+        }
         if (mEnvironment) fresh->setEnvironment(*mEnvironment, cli::resolveBakeSettings(mOptions), cli::cacheDirectory(mOptions));
         fresh->prepare(mSettings);
         mRenderer = std::move(fresh);
@@ -154,10 +207,19 @@ bool Viewer::reloadShaders()
     } catch (const std::exception& e) {
         lastError = e.what();
         log::warn("shader reload failed, keeping the last good programs: {}", lastError);
-        if (mDebug) mDebug->clear(); // the driver reports the compile error as a GL error too
+        // The driver reports a compile error as a GL error too; any other is a bug and stays.
+        if (mDebug && dynamic_cast<const gl::ShaderError*>(&e)) mDebug->discardAfter(errorsBefore);
         mRenderer->state().reset();
         return false;
     }
+}
+
+bool Viewer::reloadChangedShaders()
+{
+    if (!mShaderWatcher.changed()) return false;
+    log::info("shader files changed under {}", mShaderWatcher.root().string());
+    reloadShaders();
+    return true;
 }
 
 void Viewer::addLight(scene::Light::Type type)
@@ -206,40 +268,55 @@ void Viewer::editLight(int index, const render::PlacedLight& light)
     log::debug("light {}: uploaded {} bytes at offset {}", index, mLastLightUpload.bytes, range.offset);
 }
 
-void Viewer::setMaterialModel(int material, scene::ShadingModel model)
+scene::Material& Viewer::material(int index)
 {
-    if (material < 0 || material >= mRenderer->materialCount())
-        throw Error("no material {} (there are {})", material, mRenderer->materialCount());
-    scene::MaterialShading shading = mRenderer->materialShading(material);
+    if (index < 0 || index >= mRenderer->materialCount())
+        throw Error("no material {} (there are {})", index, mRenderer->materialCount());
+    std::vector<scene::Material>& materials = mDocument.scene.materials;
+    return index < int(materials.size()) ? materials[size_t(index)] : mDefaultMaterial;
+}
+
+void Viewer::setMaterialModel(int index, scene::ShadingModel model)
+{
+    material(index); // checks the index
+    scene::MaterialShading shading = mRenderer->materialShading(index);
     shading.model = model;
-    setMaterialShading(material, shading);
+    setMaterialShading(index, shading);
 }
 
-void Viewer::setMaterialShading(int material, const scene::MaterialShading& shading)
+void Viewer::setMaterialShading(int index, const scene::MaterialShading& shading)
 {
-    if (material < 0 || material >= mRenderer->materialCount())
-        throw Error("no material {} (there are {})", material, mRenderer->materialCount());
-    mRenderer->setMaterialShading(material, shading);
-    // The scene's copy too, so that a shader reload or the panel sees it.
-    if (material < int(mDocument.scene.materials.size())) mDocument.scene.materials[size_t(material)].shading = shading;
+    scene::Material& m = material(index);
+    mRenderer->setMaterialShading(index, shading);
+    m.shading = shading;
 }
 
-void Viewer::setMaterialParameter(int material, render::MaterialParameter parameter, const glm::vec4& value)
+void Viewer::setMaterialParameter(int index, render::MaterialParameter parameter, const glm::vec4& value)
 {
-    if (material < 0 || material >= mRenderer->materialCount())
-        throw Error("no material {} (there are {})", material, mRenderer->materialCount());
-    mRenderer->setMaterialParameter(material, parameter, value);
-    // Keep the scene's copy in step so that the panel shows it and a shader reload keeps it.
-    if (material >= int(mDocument.scene.materials.size())) return;
-    scene::Material& m = mDocument.scene.materials[size_t(material)];
+    scene::Material& m = material(index);
+    mRenderer->setMaterialParameter(index, parameter, value);
+    // The plain copy in step, for the panel and for setMaterialIor.
     switch (parameter) {
     case render::MaterialParameter::BaseColor: m.baseColorFactor = value; break;
     case render::MaterialParameter::Emissive: m.emissiveFactor = glm::vec3(value); m.emissiveStrength = 1.0f; break;
     case render::MaterialParameter::Metallic: m.metallicFactor = value.x; break;
     case render::MaterialParameter::Roughness: m.roughnessFactor = value.x; break;
     case render::MaterialParameter::Shininess: m.shininess = value.x; break;
-    default: break;
+    case render::MaterialParameter::SpecularFactor: m.specularFactor = value.x; break;
+    case render::MaterialParameter::SectorLight: m.sectorLight = int(std::lround(std::clamp(value.x, 0.0f, 255.0f))); break;
+    case render::MaterialParameter::PhongSpecular: // the classic ks: only in the record
+    case render::MaterialParameter::SpecularColor: break; // colour × ior: setMaterialIor
     }
+}
+
+void Viewer::setMaterialIor(int index, float ior)
+{
+    // Below 1 F0 would grow again; 1 is no reflection at all.
+    if (!(ior >= 1.0f)) throw Error("an index of refraction is at least 1 (got {})", ior);
+    scene::Material& m = material(index);
+    m.ior = ior;
+    setMaterialParameter(index, render::MaterialParameter::SpecularColor,
+                         glm::vec4(m.specularColorFactor * (scene::f0FromIor(ior) / 0.04f), 0.0f));
 }
 
 int Viewer::pickMaterial(float x, float y)
@@ -256,7 +333,7 @@ int Viewer::pickMaterial(float x, float y)
     // The renderer's registry puts the glTF default material after the scene's.
     selectedMaterial = hit->material >= 0 ? hit->material : int(mDocument.scene.materials.size());
     lastMessage = "picked material " + std::to_string(selectedMaterial);
-    openMaterialsPanel = true;
+    panelRequests["Materials"] = true;
     log::info("{} (node {}, mesh {})", lastMessage, hit->node, hit->mesh);
     return selectedMaterial;
 }

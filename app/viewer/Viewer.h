@@ -3,12 +3,14 @@
 // render::Renderer's; this class only decides what to render and with which settings.
 #include <array>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "OrbitCamera.h"
+#include "ShaderWatcher.h"
 #include "app/cli/SceneSetup.h"
 #include "render/LightBuffer.h"
 #include "render/Renderer.h"
@@ -54,9 +56,19 @@ public:
 
     /// Renders one frame at the window's size and presents it (the UI draws on top).
     void renderFrame(float deltaSeconds);
+    /// The rendered frame (no panels) as PNG.
     void screenshot(const std::filesystem::path& path);
+    /// What the window shows, panels included: written at the end of the next frame, from the
+    /// default framebuffer before the swap (captureWindow).
+    void screenshotWindow(const std::filesystem::path& path) { mPendingWindowShot = path; }
+    /// Called by the frame loop once the UI is drawn, before the swap: writes a pending
+    /// screenshotWindow.
+    void captureWindow();
     /// Rebuilds the renderer from the shader files; on a compile error keeps the old one.
     bool reloadShaders();
+    /// Hot reload: reloads when a file under the shader directory changed since the last check
+    /// (ShaderWatcher). Returns whether it reloaded (successfully or not).
+    bool reloadChangedShaders();
 
     // Lights: add/remove rewrite the whole buffer, editing one light only its bytes.
     void addLight(scene::Light::Type type);
@@ -64,9 +76,17 @@ public:
     void editLight(int index, const render::PlacedLight& light);
     const LightUpload& lastLightUpload() const { return mLastLightUpload; }
 
+    // Materials: the renderer's registry (the scene's materials, glTF's default material last).
+    // Edits go to the renderer and to the plain copy below, and survive a shader reload.
     void setMaterialModel(int material, scene::ShadingModel model);
     void setMaterialShading(int material, const scene::MaterialShading& shading);
     void setMaterialParameter(int material, render::MaterialParameter parameter, const glm::vec4& value);
+    /// KHR_materials_ior: the dielectric F0 from the index of refraction (and the material's
+    /// KHR_materials_specular colour).
+    void setMaterialIor(int material, float ior);
+    /// Material `index` as plain data, kept in step with the edits above: the scene's, or the
+    /// default material for the registry's last index. Throws for an index out of range.
+    scene::Material& material(int index);
 
     /// Selects the material of the surface under window pixel (x, y) (top left = 0, 0) in the
     /// last frame; returns it, or -1 when the ray meets nothing (selection unchanged).
@@ -86,7 +106,7 @@ public:
     const std::string& environmentName() const { return mEnvironmentName; }
     const StartupTimes& startup() const { return mStartup; }
     void setContextTime(double ms) { mStartup.context = ms; }
-    /// The monitor whose errors a failed shader reload clears: a compile error in an edited
+    /// The monitor whose errors a failed shader compile discards: a compile error in an edited
     /// shader is the user's to fix (shown in the UI), not a bug of the viewer.
     void setDebugMonitor(gl::DebugMonitor* monitor) { mDebug = monitor; }
 
@@ -94,7 +114,9 @@ public:
     int selectedMaterial = 0;
     bool showUi = true;
     bool flyMode = false;
-    bool openMaterialsPanel = false; ///< a pick opens the Materials panel on the next frame
+    /// Panels to open (true) or close on the next frame, by header name ("Materials"): a pick
+    /// opens the Materials panel, scripts arrange the panels for screenshots.
+    std::map<std::string, bool> panelRequests;
     bool gpuTiming = true;
     std::string lastError;   ///< shown in the UI until dismissed
     std::string lastMessage; ///< e.g. where a screenshot went
@@ -121,6 +143,9 @@ private:
     render::View mLastView;
     glm::vec2 mLastSize{1.0f};
     gl::DebugMonitor* mDebug = nullptr;
+    std::filesystem::path mPendingWindowShot;
+    scene::Material mDefaultMaterial{.name = "default"}; ///< glTF's default material, as edited
+    ShaderWatcher mShaderWatcher;
 };
 
 } // namespace specula::viewer

@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "Viewer.h"
@@ -213,6 +214,16 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
     }
     if (a == "material-roughness") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Roughness, glm::vec4(w.number(2))); return 0; }
     if (a == "material-metallic") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Metallic, glm::vec4(w.number(2))); return 0; }
+    if (a == "material-emissive") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Emissive, glm::vec4(w.vec3(2), 0.0f)); return 0; }
+    if (a == "material-ior") { viewer.setMaterialIor(w.integer(1), w.number(2)); return 0; }
+    if (a == "material-ks") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::PhongSpecular, glm::vec4(w.vec3(2), 0.0f)); return 0; }
+    if (a == "material-shininess") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Shininess, glm::vec4(w.number(2))); return 0; }
+    if (a == "material-sector-light") {
+        const float level = w.number(2);
+        if (level < 0.0f || level > 255.0f) throw Error("a sector light level is 0 to 255 (got {})", level);
+        viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::SectorLight, glm::vec4(level));
+        return 0;
+    }
     // Frame settings.
     if (a == "toggle") {
         bool* flag = toggleTarget(viewer, w.text(1));
@@ -265,8 +276,42 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         glfwSetWindowSize(static_cast<GLFWwindow*>(viewer.context().nativeWindow()), width, height);
         return 0;
     }
+    if (a == "panel") {
+        // panel NAME open|closed: arranges the panels (for screenshots with the UI).
+        static const std::map<std::string, std::string> kPanels = {
+            {"statistics", "Statistics"}, {"scene", "Scene"}, {"lights", "Lights"}, {"materials", "Materials"},
+            {"brdf", "BRDF explorer"}, {"environment", "Environment"}, {"post", "Post-processing"}};
+        const auto panel = kPanels.find(w.text(1));
+        if (panel == kPanels.end()) throw Error("no panel '{}' (statistics, scene, lights, materials, brdf, environment, post)", w.text(1));
+        if (w.text(2) != "open" && w.text(2) != "closed") throw Error("panel wants open or closed (got '{}')", w.text(2));
+        viewer.panelRequests[panel->second] = w.text(2) == "open";
+        return 0;
+    }
+    if (a == "log-stats") {
+        // What the Statistics panel shows of the last frame, as one line.
+        const render::FrameStats& stats = viewer.renderer().stats();
+        std::string passes;
+        for (const render::PassTiming& pass : stats.passes) passes += fmt::format(", {} {:.3f} ms", pass.name, pass.gpuMs);
+        log::info("frame stats: {} draw calls, {} triangles{}", stats.drawCalls, stats.triangles, passes);
+        return 0;
+    }
     if (a == "reload-shaders") { viewer.reloadShaders(); return 0; }
+    if (a == "poll-shaders") {
+        // What the interactive viewer does twice a second: reload if a shader file changed.
+        if (!viewer.reloadChangedShaders()) log::info("shader files unchanged");
+        return 0;
+    }
+    if (a == "copy-file") {
+        // As an editor saving a file: lets a script change a shader between frames.
+        std::filesystem::copy_file(w.text(1), w.text(2), std::filesystem::copy_options::overwrite_existing);
+        return 0;
+    }
     if (a == "screenshot") { viewer.screenshot(w.text(1)); return 0; }
+    if (a == "screenshot-window") {
+        // The window as shown, panels included: needs a frame drawn with the UI.
+        viewer.screenshotWindow(w.text(1));
+        return 1;
+    }
     throw Error("unknown action '{}'", a);
 }
 

@@ -14,7 +14,8 @@
 
 #include "Viewer.h"
 #include "core/Error.h"
-#include "render/Brdf.h"
+#include "render/BrdfPlot.h"
+#include "render/ShadingVariant.h"
 
 namespace specula::viewer {
 
@@ -48,6 +49,16 @@ void guarded(Viewer& viewer, Action&& action)
     }
 }
 
+/// A panel's collapsing header, opened or closed first if a pick or a script asked.
+bool panelHeader(Viewer& viewer, const char* name, ImGuiTreeNodeFlags flags = 0)
+{
+    if (const auto request = viewer.panelRequests.find(name); request != viewer.panelRequests.end()) {
+        ImGui::SetNextItemOpen(request->second);
+        viewer.panelRequests.erase(request);
+    }
+    return ImGui::CollapsingHeader(name, flags);
+}
+
 void drawNode(const scene::Scene& scene, int index)
 {
     const scene::Node& node = scene.nodes[size_t(index)];
@@ -63,7 +74,7 @@ void drawNode(const scene::Scene& scene, int index)
 
 void statisticsPanel(Viewer& viewer)
 {
-    if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!panelHeader(viewer, "Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::Text("%.1f FPS (%.2f ms)", io.Framerate, 1000.0f / std::max(io.Framerate, 1e-3f));
     ImGui::PlotLines("frame ms", viewer.frameTimes.data(), int(viewer.frameTimes.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 50));
@@ -83,7 +94,7 @@ void statisticsPanel(Viewer& viewer)
 
 void scenePanel(Viewer& viewer)
 {
-    if (!ImGui::CollapsingHeader("Scene")) return;
+    if (!panelHeader(viewer, "Scene")) return;
     const scene::Scene& scene = viewer.document().scene;
     ImGui::Text("%s: %zu meshes, %zu materials, %zu triangles", viewer.sceneName().c_str(), scene.meshes.size(),
                 scene.materials.size(), scene.triangleCount());
@@ -107,7 +118,7 @@ void scenePanel(Viewer& viewer)
 
 void lightsPanel(Viewer& viewer)
 {
-    if (!ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!panelHeader(viewer, "Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
     render::LightBuffer& lights = viewer.renderer().lights();
     if (ImGui::Button("+ point")) guarded(viewer, [&] { viewer.addLight(scene::Light::Type::Point); });
     ImGui::SameLine();
@@ -132,7 +143,7 @@ void lightsPanel(Viewer& viewer)
                                 &l.light.intensity, 0.05f * std::max(l.light.intensity, 1.0f), 0.0f, 1e6f, "%.3f");
     if (l.light.type != scene::Light::Type::Directional) {
         changed |= ImGui::DragFloat3("position", &l.position.x, 0.01f);
-        changed |= ImGui::DragFloat("range (0 = infinite)", &l.light.range, 0.05f, 0.0f, 1e4f);
+        changed |= ImGui::DragFloat("range (0 = none)", &l.light.range, 0.05f, 0.0f, 1e4f);
     }
     if (l.light.type != scene::Light::Type::Point) changed |= ImGui::DragFloat3("direction", &l.direction.x, 0.01f, -1.0f, 1.0f);
     if (l.light.type == scene::Light::Type::Spot) {
@@ -177,9 +188,7 @@ bool termCombo(const char* label, std::optional<Enum>& value, int count, const c
 
 void materialsPanel(Viewer& viewer)
 {
-    if (viewer.openMaterialsPanel) ImGui::SetNextItemOpen(true);
-    viewer.openMaterialsPanel = false;
-    if (!ImGui::CollapsingHeader("Materials")) return;
+    if (!panelHeader(viewer, "Materials")) return;
     ImGui::TextDisabled("click on an object to pick its material");
     render::Renderer& renderer = viewer.renderer();
     std::vector<scene::Material>& materials = viewer.document().scene.materials;
@@ -209,7 +218,7 @@ void materialsPanel(Viewer& viewer)
     scene::MaterialShading terms = shading;
     bool termsChanged = false;
     termsChanged |= termCombo("D (distribution)", terms.distribution, 3, scene::brdfDistributionName);
-    termsChanged |= termCombo("G (masking-shadowing)", terms.geometry, 7, scene::brdfGeometryName);
+    termsChanged |= termCombo("G (masking)", terms.geometry, 7, scene::brdfGeometryName);
     termsChanged |= termCombo("F (Fresnel)", terms.fresnel, 3, scene::brdfFresnelName);
     termsChanged |= termCombo("diffuse", terms.diffuse, 3, scene::brdfDiffuseName);
     if (termsChanged) guarded(viewer, [&] { viewer.setMaterialShading(m, terms); });
@@ -227,66 +236,93 @@ void materialsPanel(Viewer& viewer)
         ImGui::TextDisabled("%s", kSlots[k]);
         ImGui::EndGroup();
     }
-    if (m >= int(materials.size())) return;
-    scene::Material& mat = materials[size_t(m)];
-    glm::vec4 color = mat.baseColorFactor;
-    if (ImGui::ColorEdit4("base colour", &color.x))
-        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::BaseColor, color); });
-    float metallic = mat.metallicFactor, roughness = mat.roughnessFactor, shininess = mat.shininess;
-    if (ImGui::SliderFloat("metallic", &metallic, 0.0f, 1.0f))
-        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::Metallic, glm::vec4(metallic)); });
-    if (ImGui::SliderFloat("roughness (perceptual)", &roughness, 0.0f, 1.0f))
-        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::Roughness, glm::vec4(roughness)); });
-    glm::vec3 emissive = mat.emissiveFactor * mat.emissiveStrength;
-    if (ImGui::DragFloat3("emissive (cd/m2)", &emissive.x, 0.01f, 0.0f, 1e5f))
-        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::Emissive, glm::vec4(emissive, 0.0f)); });
-    if (ImGui::DragFloat("shininess (0 = from roughness)", &shininess, 0.5f, 0.0f, 1e4f))
-        guarded(viewer, [&] { viewer.setMaterialParameter(m, render::MaterialParameter::Shininess, glm::vec4(shininess)); });
+    // Parameters as the renderer's record holds them (the default material's too); each edit
+    // rewrites that field's bytes only (Renderer::setMaterialParameter).
+    using render::MaterialParameter;
+    auto value = [&](MaterialParameter p) { return renderer.materialParameter(m, p); };
+    auto set = [&](MaterialParameter p, const glm::vec4& v) { guarded(viewer, [&] { viewer.setMaterialParameter(m, p, v); }); };
+    glm::vec4 color = value(MaterialParameter::BaseColor);
+    if (ImGui::ColorEdit4("base colour", &color.x)) set(MaterialParameter::BaseColor, color);
+    float metallic = value(MaterialParameter::Metallic).x, roughness = value(MaterialParameter::Roughness).x;
+    if (ImGui::SliderFloat("metallic", &metallic, 0.0f, 1.0f)) set(MaterialParameter::Metallic, glm::vec4(metallic));
+    if (ImGui::SliderFloat("roughness", &roughness, 0.0f, 1.0f)) set(MaterialParameter::Roughness, glm::vec4(roughness));
+    glm::vec3 emissive = glm::vec3(value(MaterialParameter::Emissive));
+    if (ImGui::DragFloat3("emissive (cd/m2)", &emissive.x, 0.01f, 0.0f, 1e5f)) set(MaterialParameter::Emissive, glm::vec4(emissive, 0.0f));
+    {
+        const scene::Material& plain = viewer.material(m);
+        float ior = plain.ior.value_or(1.5f);
+        if (ImGui::DragFloat("IOR", &ior, 0.005f, 1.0f, 4.0f, plain.ior ? "%.3f" : "%.3f (unset: F0 0.04)"))
+            guarded(viewer, [&] { viewer.setMaterialIor(m, std::max(ior, 1.0f)); });
+        const float f0 = 0.04f * value(MaterialParameter::SpecularColor).y * value(MaterialParameter::SpecularFactor).x;
+        ImGui::SameLine();
+        ImGui::TextDisabled("F0 %.3f", f0);
+    }
+    ImGui::Separator();
+    ImGui::TextDisabled("Phong, Blinn-Phong, Gouraud, flat");
+    glm::vec4 ks = value(MaterialParameter::PhongSpecular);
+    if (ImGui::ColorEdit3("specular ks", &ks.x)) set(MaterialParameter::PhongSpecular, ks);
+    float shininess = value(MaterialParameter::Shininess).x;
+    if (ImGui::DragFloat("shininess (0: auto)", &shininess, 0.5f, 0.0f, 1e4f)) set(MaterialParameter::Shininess, glm::vec4(shininess));
+    ImGui::Separator();
+    ImGui::TextDisabled("Doom");
+    int sector = int(std::lround(value(MaterialParameter::SectorLight).x));
+    if (ImGui::SliderInt("sector light", &sector, 0, 255)) set(MaterialParameter::SectorLight, glm::vec4(float(sector)));
 }
 
 void brdfPanel(Viewer& viewer)
 {
-    if (!ImGui::CollapsingHeader("BRDF explorer")) return;
-    const std::vector<scene::Material>& materials = viewer.document().scene.materials;
+    if (!panelHeader(viewer, "BRDF explorer")) return;
+    render::Renderer& renderer = viewer.renderer();
     const int m = viewer.selectedMaterial;
-    const scene::Material mat = m >= 0 && m < int(materials.size()) ? materials[size_t(m)] : scene::Material{};
+    if (m < 0 || m >= renderer.materialCount()) return;
     float& viewDegrees = viewer.brdfViewDegrees;
     ImGui::SliderFloat("view angle", &viewDegrees, 0.0f, 89.0f, "%.0f deg");
-    // The plane of incidence: light from -89° to 89° on the far side of the normal from the view
-    // (the mirror direction is at +view angle). Factors only: textures are not sampled.
-    render::brdf::Surface surface;
-    surface.baseColor = glm::dvec3(glm::vec3(mat.baseColorFactor));
-    surface.metallic = mat.metallicFactor;
-    surface.perceptualRoughness = std::max<double>(mat.roughnessFactor, render::brdf::kMinPerceptualRoughness);
-    surface.specularFactor = mat.specularFactor;
-    const double alpha = surface.perceptualRoughness * surface.perceptualRoughness;
-    const glm::dvec3 f0 = glm::mix(glm::dvec3(0.04 * mat.specularFactor), surface.baseColor, surface.metallic);
-    constexpr int kSamples = 90;
-    float d[kSamples], v[kSamples], f[kSamples], whole[kSamples];
-    const glm::dvec3 n(0, 0, 1);
-    const double thetaV = glm::radians(double(viewDegrees));
-    const glm::dvec3 view(-std::sin(thetaV), 0.0, std::cos(thetaV));
-    auto luminance = [](const glm::dvec3& c) { return float(0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b); };
-    for (int k = 0; k < kSamples; ++k) {
-        const double thetaL = glm::radians(-89.0 + 178.0 * k / (kSamples - 1));
-        const glm::dvec3 l(std::sin(thetaL), 0.0, std::cos(thetaL));
-        const glm::dvec3 h = glm::normalize(l + view);
-        const double NoV = std::max(glm::dot(n, view), 1e-4), NoL = std::max(glm::dot(n, l), 1e-4);
-        d[k] = float(render::brdf::D_GGX(std::max(h.z, 0.0), alpha));
-        v[k] = float(render::brdf::V_SmithGGX(NoV, NoL, alpha));
-        f[k] = luminance(render::brdf::F_Schlick(f0, std::max(glm::dot(view, h), 0.0)));
-        whole[k] = luminance(render::brdf::evaluate(surface, n, view, l)) * float(NoL);
+    // The selected material's factors as the shader reads them, and its shading resolved as a
+    // draw resolves it (the frame's override, the material's choice, the frame's defaults).
+    using render::MaterialParameter;
+    auto value = [&](MaterialParameter p) { return renderer.materialParameter(m, p); };
+    render::BrdfPlotMaterial material;
+    material.baseColor = glm::dvec3(glm::vec3(value(MaterialParameter::BaseColor)));
+    material.metallic = value(MaterialParameter::Metallic).x;
+    material.perceptualRoughness = value(MaterialParameter::Roughness).x;
+    material.specularColor = glm::dvec3(glm::vec3(value(MaterialParameter::SpecularColor)));
+    material.specularFactor = value(MaterialParameter::SpecularFactor).x;
+    material.phongSpecular = glm::dvec3(glm::vec3(value(MaterialParameter::PhongSpecular)));
+    material.shininess = value(MaterialParameter::Shininess).x;
+    const render::FrameSettings& settings = viewer.settings();
+    const render::ResolvedShading shading =
+        render::resolveShading(settings.materialOverride, settings.brdfGeometry, render::packShading(renderer.materialShading(m)));
+    const render::BrdfCurves curves = render::sampleBrdfCurves(material, shading, viewDegrees);
+    const int n = int(curves.whole.size());
+    ImGui::TextDisabled("material %d, factors only (textures are not sampled)", m);
+    ImGui::TextDisabled("x: light angle -89..89 deg; mirror direction at +%.0f", viewDegrees);
+    switch (curves.kind) {
+    case render::BrdfPlotKind::None:
+        ImGui::TextWrapped("%s shading does not depend on the light's direction: nothing to plot.", scene::shadingModelName(shading.model));
+        break;
+    case render::BrdfPlotKind::Classic: {
+        const bool blinn = shading.model == scene::ShadingModel::BlinnPhong;
+        ImGui::Text("%s: lobe %s, n = %.0f", scene::shadingModelName(shading.model), blinn ? "(N.H)^n" : "(R.V)^n", curves.shininess);
+        ImGui::TextDisabled("f x NoL = (kd NoL + ks lobe) / pi");
+        ImGui::PlotLines("lobe", curves.d.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        ImGui::PlotLines("f x NoL", curves.whole.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        break;
     }
-    ImGui::TextDisabled("GGX, Smith-GGX, Schlick; x = light angle -89..89 deg");
-    ImGui::PlotLines("D", d, kSamples, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
-    ImGui::PlotLines("V = G/(4 NoL NoV)", v, kSamples, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
-    ImGui::PlotLines("F (luminance)", f, kSamples, 0, nullptr, 0.0f, 1.0f, ImVec2(0, 60));
-    ImGui::PlotLines("f x NoL", whole, kSamples, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+    case render::BrdfPlotKind::Microfacet:
+        ImGui::Text("D %s, G %s, F %s, diffuse %s", scene::brdfDistributionName(shading.distribution),
+                    scene::brdfGeometryName(shading.geometry), scene::brdfFresnelName(shading.fresnel),
+                    scene::brdfDiffuseName(shading.diffuse));
+        ImGui::PlotLines("D", curves.d.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        ImGui::PlotLines("V = G/(4 NoL NoV)", curves.v.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        ImGui::PlotLines("F (luminance)", curves.f.data(), n, 0, nullptr, 0.0f, 1.0f, ImVec2(0, 60));
+        ImGui::PlotLines("f x NoL", curves.whole.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        break;
+    }
 }
 
 void environmentPanel(Viewer& viewer)
 {
-    if (!ImGui::CollapsingHeader("Environment")) return;
+    if (!panelHeader(viewer, "Environment")) return;
     render::EnvironmentView& e = viewer.settings().environment;
     ImGui::Text("file: %s", viewer.environmentName().empty() ? "(none)" : viewer.environmentName().c_str());
     std::array<char, 512>& path = viewer.environmentInput;
@@ -303,7 +339,7 @@ void environmentPanel(Viewer& viewer)
 
 void postPanel(Viewer& viewer)
 {
-    if (!ImGui::CollapsingHeader("Post-processing", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!panelHeader(viewer, "Post-processing", ImGuiTreeNodeFlags_DefaultOpen)) return;
     render::FrameSettings& s = viewer.settings();
     ImGui::SliderFloat("exposure (EV)", &s.exposureEv, -10.0f, 10.0f);
     if (ImGui::BeginCombo("tone mapper", render::tonemapName(s.tonemap))) {
@@ -394,7 +430,11 @@ void handleInput(Viewer& viewer, float deltaSeconds)
         camera.frame(viewer.document().scene.worldBounds());
     }
     if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) viewer.resetCamera();
-    if (ImGui::IsKeyPressed(GLFW_KEY_P, false) || ImGui::IsKeyPressed(GLFW_KEY_F12, false)) takeScreenshot(viewer);
+    if (ImGui::IsKeyPressed(GLFW_KEY_P, false) || ImGui::IsKeyPressed(GLFW_KEY_F12, false)) {
+        // Shift: the window as shown, panels included (written at the end of this frame).
+        if (io.KeyShift) viewer.screenshotWindow(timestampedScreenshotName());
+        else takeScreenshot(viewer);
+    }
     if (ImGui::IsKeyPressed(GLFW_KEY_H, false) || ImGui::IsKeyPressed(GLFW_KEY_TAB, false)) viewer.showUi = !viewer.showUi;
     if (ImGui::IsKeyPressed(GLFW_KEY_F5, false)) viewer.reloadShaders();
     if (ImGui::IsKeyPressed(GLFW_KEY_C, false)) viewer.flyMode = !viewer.flyMode;
@@ -433,7 +473,8 @@ void drawUi(Viewer& viewer)
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(420, std::max(300.0f, ImGui::GetIO().DisplaySize.y - 20.0f)), ImGuiCond_FirstUseEver);
     ImGui::Begin("Specula");
-    ImGui::TextDisabled("F frame  R reset  P screenshot  H hide UI  F5 reload shaders  C fly");
+    ImGui::TextDisabled("F frame  R reset camera  C fly camera  H hide UI");
+    ImGui::TextDisabled("P screenshot (Shift+P: with panels)  F5 reload shaders");
     if (!viewer.lastMessage.empty()) ImGui::TextWrapped("%s", viewer.lastMessage.c_str());
     statisticsPanel(viewer);
     scenePanel(viewer);

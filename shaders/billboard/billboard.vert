@@ -19,6 +19,7 @@ uniform vec2 uSize;           // width, height: world units, or pixels when uSiz
 uniform vec2 uAnchor;         // the sprite point at the position, (0, 0) = bottom left
 uniform bool uSizeInPixels;
 uniform float uViewportHeight;
+uniform bool uSpanAxis;       // arbitrary axis: the quad's height is the axis vector (|axis| metres; scene::BillboardGroup::spanAxis)
 
 out vec2 vUv;
 out vec3 vTint;
@@ -44,16 +45,20 @@ void main()
     else if (uKind == SPECULA_BILLBOARD_ARBITRARY_AXIS) basis = arbitraryAxisBasis(position, camera, cameraUp, b.axis.xyz);
     else basis = pointSpriteBasis(position, camera, cameraUp);
 
-    float scale = b.positionScale.w;
+    vec2 uv = kCorners[gl_VertexID];
+    vec2 local = (uv - uAnchor) * uSize * b.positionScale.w;
+    if (uSpanAxis) local.y = (uv.y - uAnchor.y) * length(b.axis.xyz);
     if (uSizeInPixels) {
         // A pixel spans 2w / (P[1][1] * height) world units at clip w (render::worldUnitsPerPixel);
         // 0 behind the camera so the quad collapses there instead of flipping towards the viewer.
-        float w = (frame.viewProjection * vec4(position, 1.0)).w;
-        scale *= 2.0 * max(w, 0.0) / (frame.projection[1][1] * uViewportHeight);
+        // A quad spanning its axis is measured where this vertex is along it, so a rod keeps its
+        // width in pixels from end to end; others at their position, keeping their shape.
+        vec3 at = uSpanAxis ? position + basis[1] * local.y : position;
+        float w = (frame.viewProjection * vec4(at, 1.0)).w;
+        float pixel = 2.0 * max(w, 0.0) / (frame.projection[1][1] * uViewportHeight);
+        local.x *= pixel;
+        if (!uSpanAxis) local.y *= pixel;
     }
-
-    vec2 uv = kCorners[gl_VertexID];
-    vec2 local = (uv - uAnchor) * uSize * scale;
     mat4 model = mat4(vec4(basis[0], 0.0), vec4(basis[1], 0.0), vec4(basis[2], 0.0), vec4(position, 1.0));
     vUv = uv;
     vTint = b.tint.rgb;

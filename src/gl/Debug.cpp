@@ -79,6 +79,12 @@ void DebugMonitor::clear()
     mErrors.clear();
 }
 
+void DebugMonitor::discardAfter(int count)
+{
+    std::lock_guard lock(mMutex);
+    if (count >= 0 && size_t(count) < mErrors.size()) mErrors.resize(size_t(count));
+}
+
 void label(uint32_t identifier, uint32_t name, std::string_view text)
 {
     if (name && !text.empty()) glObjectLabel(identifier, name, GLsizei(text.size()), text.data());

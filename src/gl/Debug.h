@@ -21,6 +21,9 @@ public:
     int errorCount() const;
     std::vector<std::string> errors() const;
     void clear();
+    /// Forgets the errors after the first `count`: those of a failure the caller expected and
+    /// handled (a shader that does not compile reports a GL error too).
+    void discardAfter(int count);
 
     void onMessage(uint32_t source, uint32_t type, uint32_t id, uint32_t severity, std::string_view text);
 

@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "core/Error.h"
@@ -102,6 +103,17 @@ void Framebuffer::clearDepth(float depth)
 void Framebuffer::blitColorTo(const Framebuffer& target, int width, int height) const
 {
     glBlitNamedFramebuffer(id(), target.id(), 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+std::vector<uint8_t> readDefaultFramebuffer(int width, int height)
+{
+    std::vector<uint8_t> pixels(size_t(std::max(width, 0)) * size_t(std::max(height, 0)) * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glNamedFramebufferReadBuffer(0, GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadnPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    return pixels;
 }
 
 } // namespace specula::gl

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "gl/Handle.h"
 
@@ -40,5 +41,10 @@ private:
     std::string mLabel;
     uint32_t mColorMask = 0;
 };
+
+/// The default framebuffer's back buffer (what a window shows after the next swap), RGBA8,
+/// bottom row first: `width` × `height` pixels from the bottom left. Binds framebuffer 0 for
+/// reading; callers with a binding cache must reset it.
+std::vector<uint8_t> readDefaultFramebuffer(int width, int height);
 
 } // namespace specula::gl

@@ -39,7 +39,7 @@ GLuint compile(GLenum stage, const std::filesystem::path& root, const std::strin
         glDeleteShader(shader);
         // First error line only: that is the one-line message; the rest goes to debug log.
         const std::string first = log.substr(0, log.find('\n'));
-        throw Error("shader compile error: {}", first.empty() ? "shaders/" + path : first);
+        throw ShaderError("shader compile error: {}", first.empty() ? "shaders/" + path : first);
     }
     return shader;
 }
@@ -71,6 +71,13 @@ Program::Program(const ProgramDesc& desc) : mDesc(desc)
             shaders.push_back(compile(GL_VERTEX_SHADER, root, desc.vertex, desc.defines));
             shaders.push_back(compile(GL_FRAGMENT_SHADER, root, desc.fragment, desc.defines));
         }
+    } catch (const ShaderError&) {
+        cleanup();
+        throw;
+    } catch (const Error& e) {
+        // The loader's errors (a missing or cyclic include) are the files' fault too.
+        cleanup();
+        throw ShaderError(e.what());
     } catch (...) {
         cleanup();
         throw;
@@ -90,7 +97,7 @@ Program::Program(const ProgramDesc& desc) : mDesc(desc)
         glGetProgramInfoLog(program, length, nullptr, log.data());
         log.resize(std::strlen(log.c_str()));
         const std::string first = log.substr(0, log.find('\n'));
-        throw Error("shader link error in '{}': {}", desc.label.empty() ? desc.vertex + desc.compute : desc.label, first);
+        throw ShaderError("shader link error in '{}': {}", desc.label.empty() ? desc.vertex + desc.compute : desc.label, first);
     }
     label(GL_PROGRAM, program, desc.label);
 }

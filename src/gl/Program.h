@@ -7,6 +7,7 @@
 
 #include <glm/fwd.hpp>
 
+#include "core/Error.h"
 #include "gl/Handle.h"
 
 namespace specula::gl {
@@ -14,6 +15,13 @@ namespace specula::gl {
 namespace detail {
 void deleteProgram(uint32_t id);
 }
+
+/// A program that could not be built from its files: a missing or cyclic include, a compile or
+/// a link error. The message names the file and line (shaders/forward/pbr.frag:120: ...).
+class ShaderError : public Error {
+public:
+    using Error::Error;
+};
 
 /// The directory holding the GLSL sources: $SPECULA_SHADER_DIR, else the source tree's shaders/.
 std::filesystem::path shaderRoot();
@@ -30,7 +38,7 @@ struct ProgramDesc {
 class Program {
 public:
     Program() = default;
-    /// Compiles and links; throws specula::Error whose message names file and line.
+    /// Compiles and links; throws ShaderError whose message names file and line.
     explicit Program(const ProgramDesc& desc);
 
     uint32_t id() const { return mHandle.get(); }

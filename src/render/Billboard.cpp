@@ -135,6 +135,15 @@ scene::Image makeBuiltinSprite(scene::BuiltinSprite sprite, int size)
             // u right, v up, both in [0, 1] at texel centres; rows are stored top first.
             const float u = (float(x) + 0.5f) / float(image.width);
             const float v = 1.0f - (float(y) + 0.5f) / float(image.height);
+            if (sprite == scene::BuiltinSprite::Bar) {
+                // Solid across the middle half, then a smooth fall to 0 a texel short of the
+                // sides (as the disc's rim); the same all along the height, so stretching the
+                // quad to any length keeps the profile.
+                const float r = 2.0f * std::abs(u - 0.5f) * float(size) / float(size - 2);
+                const float t = std::clamp((r - 0.5f) / 0.5f, 0.0f, 1.0f);
+                put(x, y, glm::vec3(1.0f), 1.0f - t * t * (3.0f - 2.0f * t));
+                continue;
+            }
             if (sprite == scene::BuiltinSprite::Disc) {
                 // Solid out to half the radius, then a smooth fall to 0 at the rim: soft when
                 // blended, a clean circle when cut out at alpha 0.5. The rim stops a texel short
@@ -171,7 +180,9 @@ scene::Image makeBuiltinSprite(scene::BuiltinSprite sprite, int size)
             }
         }
     }
-    image.name = sprite == scene::BuiltinSprite::Tree ? "builtin tree sprite" : "builtin disc sprite";
+    image.name = sprite == scene::BuiltinSprite::Tree  ? "builtin tree sprite"
+               : sprite == scene::BuiltinSprite::Bar ? "builtin bar sprite"
+                                                     : "builtin disc sprite";
     return image;
 }
 

@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <glm/gtc/constants.hpp>
 
 #include "core/Log.h"
 #include "gl/Buffer.h"
@@ -24,31 +28,71 @@ static_assert(uint32_t(scene::BillboardKind::PointSprite) == SPECULA_BILLBOARD_P
 static_assert(uint32_t(scene::BillboardKind::AxisAligned) == SPECULA_BILLBOARD_AXIS_ALIGNED);
 static_assert(uint32_t(scene::BillboardKind::ArbitraryAxis) == SPECULA_BILLBOARD_ARBITRARY_AXIS);
 
-scene::BillboardGroup makeLightGizmos(const std::vector<PlacedLight>& lights, const scene::Bounds& sceneBounds)
+LightGizmos makeLightGizmos(const std::vector<PlacedLight>& lights, const scene::Bounds& sceneBounds, int selected)
 {
-    scene::BillboardGroup group;
-    group.name = "light gizmos";
-    group.kind = scene::BillboardKind::PointSprite;
-    group.size = glm::vec2(kGizmoSizePixels);
-    group.sizeInPixels = true;
-    group.tint = glm::vec3(kGizmoRadiance);
-    group.alphaMode = scene::AlphaMode::Blend;
-    group.sprite = scene::BuiltinSprite::Disc;
-    group.sectorLight = 255; // they mark lights: full bright in Doom frames too
+    LightGizmos gizmos;
+    scene::BillboardGroup& discs = gizmos.discs;
+    discs.name = "light gizmos";
+    discs.kind = scene::BillboardKind::PointSprite;
+    discs.size = glm::vec2(kGizmoSizePixels);
+    discs.sizeInPixels = true;
+    discs.tint = glm::vec3(kGizmoRadiance);
+    discs.alphaMode = scene::AlphaMode::Blend;
+    discs.sprite = scene::BuiltinSprite::Disc;
+    discs.sectorLight = 255; // they mark lights: full bright in Doom frames too
+    scene::BillboardGroup& rods = gizmos.rods;
+    rods.name = "light gizmo rods";
+    rods.kind = scene::BillboardKind::ArbitraryAxis;
+    rods.spanAxis = true;
+    rods.size = glm::vec2(kGizmoRodPixels, 1.0f);
+    rods.sizeInPixels = true;
+    rods.anchor = glm::vec2(0.5f, 0.0f); // from the light outwards
+    rods.tint = glm::vec3(kGizmoRodRadiance);
+    rods.alphaMode = scene::AlphaMode::Blend;
+    rods.sprite = scene::BuiltinSprite::Bar;
+    rods.sectorLight = 255;
+
     const glm::vec3 center = sceneBounds.empty() ? glm::vec3(0.0f) : sceneBounds.center();
     const float radius = sceneBounds.empty() ? 1.0f : std::max(sceneBounds.radius(), 1e-3f);
-    for (const PlacedLight& placed : lights) {
-        scene::Billboard b;
-        b.tint = placed.light.color;
-        b.position = placed.position;
-        if (placed.light.type == scene::Light::Type::Directional) {
-            const float length = glm::length(placed.direction);
-            const glm::vec3 direction = length > 0.0f ? placed.direction / length : glm::vec3(0, 0, -1);
-            b.position = center - direction * radius;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const PlacedLight& placed = lights[i];
+        const float scale = int(i) == selected ? kGizmoSelectedScale : 1.0f;
+        const glm::vec3 color = placed.light.color;
+        const float directionLength = glm::length(placed.direction);
+        const glm::vec3 direction = directionLength > 0.0f ? placed.direction / directionLength : glm::vec3(0, 0, -1);
+        scene::Billboard disc{placed.position, scale, color};
+        switch (placed.light.type) {
+        case scene::Light::Type::Point: break;
+        case scene::Light::Type::Directional:
+            disc.position = center - direction * radius;
+            rods.billboards.push_back({disc.position, scale, color, direction * radius});
+            break;
+        case scene::Light::Type::Spot: {
+            const float length = placed.light.range > 0.0f ? placed.light.range
+                                                           : std::max(glm::distance(placed.position, center), radius);
+            // Edges of the cones: unit vectors at the cone angle from the direction, evenly
+            // round it, from any basis perpendicular to it.
+            const glm::vec3 helper = std::abs(direction.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+            const glm::vec3 u = glm::normalize(glm::cross(direction, helper));
+            const glm::vec3 v = glm::cross(direction, u);
+            auto cone = [&](float angle, int count, float tint) {
+                for (int k = 0; k < count; ++k) {
+                    const float phi = 2.0f * glm::pi<float>() * float(k) / float(count);
+                    const glm::vec3 edge = std::cos(angle) * direction + std::sin(angle) * (std::cos(phi) * u + std::sin(phi) * v);
+                    rods.billboards.push_back({placed.position, scale, color * tint, edge * length});
+                }
+            };
+            // Dim rods first: rods of one light are drawn in this order, and a dim rod blended
+            // over a bright one would darken it where they cross near the apex.
+            cone(placed.light.innerConeAngle, kGizmoInnerConeRods, kGizmoInnerConeTint);
+            cone(placed.light.outerConeAngle, kGizmoOuterConeRods, 1.0f);
+            rods.billboards.push_back({placed.position, scale, color, direction * length});
+            break;
         }
-        group.billboards.push_back(b);
+        }
+        discs.billboards.push_back(disc);
     }
-    return group;
+    return gizmos;
 }
 
 namespace {
@@ -61,6 +105,7 @@ struct GroupState {
     bool sizeInPixels = false;
     scene::AlphaMode alphaMode = scene::AlphaMode::Mask;
     float alphaCutoff = 0.5f;
+    bool spanAxis = false;
     const gl::Texture* texture = nullptr;
     uint32_t first = 0; ///< Opaque and Mask groups: their range in the static part of the buffer
     uint32_t count = 0;
@@ -79,18 +124,18 @@ struct BillboardPass::Impl {
     struct Variant {
         gl::Program program;
         int uFirstInstance = -1, uKind = -1, uSize = -1, uAnchor = -1, uSizeInPixels = -1, uViewportHeight = -1,
-            uAlphaCutoff = -1, uBlend = -1;
+            uAlphaCutoff = -1, uBlend = -1, uSpanAxis = -1;
     };
     std::array<Variant, 2> variants; // [0] radiance, [1] DOOM_INDEXED
     Variant* current = &variants[0];
     gl::VertexArray quad{"billboard quad"}; // vertices come from gl_VertexID; GL core still wants a VAO
     gl::Sampler sampler;
     gl::Sampler nearestSampler; // Doom frames: texels as they are, as Doom drew sprites
-    std::array<gl::Texture, 2> builtins; // by scene::BuiltinSprite
+    std::array<gl::Texture, 3> builtins; // by scene::BuiltinSprite
     std::map<int, gl::Texture> images;   // by scene image index
 
     std::vector<GroupState> groups; // one per scene group
-    GroupState gizmos;
+    GroupState gizmoDiscs, gizmoRods;
     // Blended billboards stay on the CPU and are sorted every frame into the dynamic part.
     std::vector<shared::GpuBillboard> blended;
     std::vector<uint32_t> blendedGroup;
@@ -128,6 +173,7 @@ struct BillboardPass::Impl {
             v.uViewportHeight = v.program.uniformLocation("uViewportHeight");
             v.uAlphaCutoff = v.program.uniformLocation("uAlphaCutoff");
             v.uBlend = v.program.uniformLocation("uBlend");
+            v.uSpanAxis = v.program.uniformLocation("uSpanAxis");
         }
         return v;
     }
@@ -184,6 +230,7 @@ struct BillboardPass::Impl {
         g.sizeInPixels = group.sizeInPixels;
         g.alphaMode = group.alphaMode;
         g.alphaCutoff = group.alphaCutoff;
+        g.spanAxis = group.spanAxis && group.kind == scene::BillboardKind::ArbitraryAxis;
         g.texture = texture;
         g.count = uint32_t(group.billboards.size());
         return g;
@@ -202,6 +249,7 @@ struct BillboardPass::Impl {
         // Only cutout discards; -1 keeps every texel (alpha is never negative).
         v.program.set(v.uAlphaCutoff, g.alphaMode == scene::AlphaMode::Mask ? g.alphaCutoff : -1.0f);
         v.program.set(v.uBlend, int(g.alphaMode == scene::AlphaMode::Blend));
+        v.program.set(v.uSpanAxis, int(g.spanAxis));
     }
 
     void begin(gl::State& state, bool doomIndexed)
@@ -275,12 +323,14 @@ void BillboardPass::setScene(const scene::Scene& scene)
         }
         p.groups.push_back(g);
     }
-    p.gizmos = Impl::describe(makeLightGizmos({}, {}), p.builtin(scene::BuiltinSprite::Disc));
+    const LightGizmos gizmos = makeLightGizmos({}, {});
+    p.gizmoDiscs = Impl::describe(gizmos.discs, p.builtin(gizmos.discs.sprite));
+    p.gizmoRods = Impl::describe(gizmos.rods, p.builtin(gizmos.rods.sprite));
 
-    // The dynamic part holds the blended billboards and, separately after them, up to one
-    // gizmo per light the light buffer can hold.
+    // The dynamic part holds the blended billboards and, separately after them, the gizmos of
+    // as many lights as the light buffer can hold.
     p.dynamicFirst = uint32_t(staticRecords.size());
-    p.dynamicCapacity = uint32_t(p.blended.size()) + SPECULA_MAX_LIGHTS;
+    p.dynamicCapacity = uint32_t(p.blended.size()) + SPECULA_MAX_LIGHTS * kGizmoBillboardsPerLight;
     p.instances = gl::Buffer((size_t(p.dynamicFirst) + p.dynamicCapacity) * sizeof(shared::GpuBillboard), nullptr, "billboards");
     p.instances.update(0, staticRecords.size() * sizeof(shared::GpuBillboard), staticRecords.data());
     log::debug("billboards: {} groups, {} static and {} blended billboards", p.groups.size(), staticRecords.size(), p.blended.size());
@@ -308,7 +358,7 @@ size_t BillboardPass::drawOpaque(gl::State& state, int viewportHeight, bool doom
 }
 
 size_t BillboardPass::drawBlended(gl::State& state, const View& view, int viewportHeight, const LightBuffer* gizmoLights,
-                                  bool doomIndexed)
+                                  int selectedLight, bool doomIndexed)
 {
     Impl& p = *mImpl;
     const bool gizmos = gizmoLights && gizmoLights->count() > 0;
@@ -329,13 +379,18 @@ size_t BillboardPass::drawBlended(gl::State& state, const View& view, int viewpo
         std::vector<PlacedLight> lights;
         const int count = std::min(gizmoLights->count(), int(SPECULA_MAX_LIGHTS));
         for (int i = 0; i < count; ++i) lights.push_back(gizmoLights->light(i));
-        const scene::BillboardGroup group = makeLightGizmos(lights, p.sceneBounds);
-        std::vector<shared::GpuBillboard> records;
-        for (const scene::Billboard& b : group.billboards) records.push_back(pack(group, b));
-        const std::vector<const GroupState*> groupOf(records.size(), &p.gizmos);
-        // Gizmos mark where lights are, so they show through walls and lamp shades: no depth test.
+        const LightGizmos made = makeLightGizmos(lights, p.sceneBounds, selectedLight);
+        // Gizmos mark where lights are, so they show through walls and lamp shades: no depth
+        // test. Rods first, so that every disc sits on top of the rods leaving it.
         state.apply({.noDepthTest = true, .noDepthWrite = true, .cull = gl::CullMode::None, .blend = blend});
-        triangles += p.drawSorted(state, view, viewportHeight, records, groupOf, uint32_t(p.blended.size()));
+        uint32_t offset = uint32_t(p.blended.size());
+        for (const auto& [group, groupState] : {std::pair{&made.rods, &p.gizmoRods}, std::pair{&made.discs, &p.gizmoDiscs}}) {
+            std::vector<shared::GpuBillboard> records;
+            for (const scene::Billboard& b : group->billboards) records.push_back(pack(*group, b));
+            const std::vector<const GroupState*> groupOf(records.size(), groupState);
+            triangles += p.drawSorted(state, view, viewportHeight, records, groupOf, offset);
+            offset += uint32_t(records.size());
+        }
     }
     return triangles;
 }

@@ -9,7 +9,7 @@
 //   3. blended glTF surfaces, sorted back to front
 //   4. drawBlended(): billboards of AlphaMode::Blend groups, all groups sorted together back to
 //      front by view depth (consecutive billboards of one group share a draw), depth-tested,
-//      not written; then the light gizmos, on top of everything.
+//      not written; then the light gizmos on top of everything: rods, then discs.
 // Blended billboards and blended glTF surfaces are sorted apart, so a blended sprite behind a
 // blended glTF surface is drawn over it; scenes mixing the two should keep them apart.
 //
@@ -34,12 +34,37 @@ namespace specula::render {
 /// (cd/m²; bright enough to read as a light and to bloom, whatever the light's intensity).
 constexpr float kGizmoSizePixels = 24.0f;
 constexpr float kGizmoRadiance = 6.0f;
+/// Rods (direction, cone edges): lines this many pixels wide, emitting the light's colour × this
+/// radiance: dimmer than the discs, so that tone mapping keeps their hue and they bloom less.
+constexpr float kGizmoRodPixels = 2.0f;
+constexpr float kGizmoRodRadiance = 2.0f;
+/// Rods along a spot light's outer cone, and (dimmer, kGizmoInnerConeTint) its inner cone.
+constexpr int kGizmoOuterConeRods = 8;
+constexpr int kGizmoInnerConeRods = 4;
+constexpr float kGizmoInnerConeTint = 0.12f;
+/// The selected light's disc and rods are drawn this much larger and wider.
+constexpr float kGizmoSelectedScale = 1.6f;
+/// At most this many gizmo billboards per light (a spot light's disc and rods).
+constexpr int kGizmoBillboardsPerLight = 2 + kGizmoOuterConeRods + kGizmoInnerConeRods;
 
-/// The light gizmos as a billboard group: one point sprite per light, tinted with its colour,
-/// kGizmoSizePixels across, blended. Point and spot lights sit at their position; a directional
-/// light has none, so its gizmo sits where its light comes from, on the bounding sphere of
-/// `sceneBounds` (centre − direction × radius; radius 1 around the origin for empty bounds).
-scene::BillboardGroup makeLightGizmos(const std::vector<PlacedLight>& lights, const scene::Bounds& sceneBounds);
+/// The light gizmos as two blended billboard groups, tinted with each light's colour.
+/// - discs: a point sprite per light, kGizmoSizePixels across, × kGizmoRadiance. Point and spot lights sit at
+///   their position; a directional light has none, so its disc sits where its light comes
+///   from, on the bounding sphere of `sceneBounds` (centre − direction × radius; radius 1
+///   around the origin for empty bounds).
+/// - rods: arbitrary-axis billboards spanning their axis (BillboardGroup::spanAxis),
+///   kGizmoRodPixels wide, × kGizmoRodRadiance. A directional light's runs from its disc along its direction to
+///   the centre (length = radius). A spot light has one along its direction and
+///   kGizmoOuterConeRods along the edges of its outer cone, kGizmoInnerConeRods (dimmer) along
+///   its inner cone, all from its position, as long as its range, or without one as far as
+///   the centre of the bounds (at least the radius). Point lights have none.
+/// The light at index `selected` (if any) gets a disc kGizmoSelectedScale times larger and
+/// rods as much wider.
+struct LightGizmos {
+    scene::BillboardGroup discs;
+    scene::BillboardGroup rods;
+};
+LightGizmos makeLightGizmos(const std::vector<PlacedLight>& lights, const scene::Bounds& sceneBounds, int selected = -1);
 
 class BillboardPass {
 public:
@@ -57,9 +82,9 @@ public:
     /// `doomIndexed`: the target is a Doom frame's index and level (DoomPass::target).
     size_t drawOpaque(gl::State& state, int viewportHeight, bool doomIndexed = false);
     /// Draws the blended billboards back to front, then the gizmos of `gizmoLights` (if not
-    /// null) on top; returns triangles submitted.
+    /// null) on top, light `selectedLight` highlighted; returns triangles submitted.
     size_t drawBlended(gl::State& state, const View& view, int viewportHeight, const LightBuffer* gizmoLights,
-                       bool doomIndexed = false);
+                       int selectedLight = -1, bool doomIndexed = false);
 
 private:
     struct Impl;

@@ -173,7 +173,7 @@ dvec3 evaluate(const Surface& s, const dvec3& n, const dvec3& v, const dvec3& l)
     const double NoV = std::abs(glm::dot(n, v));
     const double NoH = std::clamp(glm::dot(n, h), 0.0, 1.0);
     const double VoH = std::clamp(glm::dot(v, h), 0.0, 1.0);
-    const dvec3 f0 = glm::mix(dvec3(s.f0Dielectric * s.specularFactor), s.baseColor, s.metallic);
+    const dvec3 f0 = glm::mix(glm::min(s.f0Dielectric * s.specularColor, dvec3(1.0)) * s.specularFactor, s.baseColor, s.metallic);
     const double f90 = s.specularFactor + (1.0 - s.specularFactor) * s.metallic;
     const dvec3 diffuseColor = s.baseColor * (1.0 - s.metallic);
     const dvec3 F = fresnel(s.fresnel, f0, f90, VoH);

@@ -56,6 +56,7 @@ struct Surface {
     double f0Dielectric = 0.04;  ///< scene::f0FromIor(ior) when the material gives an ior
     /// The BRDF as image-based light sees it: visibilityImageBased instead of visibility.
     bool imageBased = false;
+    dvec3 specularColor{1.0};    ///< KHR_materials_specular colour: dielectric F0 = min(f0Dielectric × it, 1) × specularFactor
 };
 
 /// f(l, v) (1/sr) for unit n, v, l, not multiplied by NoL. Zero when NoL <= 0.

@@ -178,7 +178,14 @@ struct Renderer::Impl {
             timer = &timers[name];
             timer->begin();
         }
-        body();
+        try {
+            body();
+        } catch (...) {
+            // A program that fails to compile on first use: the query must not stay active
+            // into the next frame (the debug group closes itself).
+            if (timer) timer->end();
+            throw;
+        }
         if (timer) {
             timer->end();
             if (wallClock) gl::finish();
@@ -492,7 +499,8 @@ struct Renderer::Impl {
         std::stable_sort(blended.begin(), blended.end(), [](const Blended& a, const Blended& b) { return a.depth < b.depth; });
         for (const Blended& b : blended) draw(*b.item, true);
         // Blended billboards after the blended surfaces (sorted apart from them), gizmos last.
-        stats.triangles += billboards.drawBlended(state, view, height, settings.gizmos ? &lights : nullptr, indexed);
+        stats.triangles += billboards.drawBlended(state, view, height, settings.gizmos ? &lights : nullptr,
+                                                  settings.selectedLight, indexed);
     }
 };
 
@@ -832,6 +840,9 @@ glm::vec4 Renderer::materialParameter(int material, MaterialParameter parameter)
     case MaterialParameter::Roughness: return glm::vec4(r.params.y, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::PhongSpecular: return glm::vec4(glm::vec3(r.phong), 0.0f);
     case MaterialParameter::Shininess: return glm::vec4(r.phong.w, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::SpecularColor: return glm::vec4(glm::vec3(r.specular), 0.0f);
+    case MaterialParameter::SpecularFactor: return glm::vec4(r.specular.w, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::SectorLight: return glm::vec4(r.emissive.w * 255.0f, 0.0f, 0.0f, 0.0f);
     }
     return glm::vec4(0.0f);
 }
@@ -862,6 +873,18 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::Shininess: {
         const glm::vec4 v(value.x);
         gpu.writeMaterial(material, offsetof(GpuMaterial, phong) + 3 * sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::SpecularColor: write(offsetof(GpuMaterial, specular), 0, 3); break;
+    case MaterialParameter::SpecularFactor: {
+        const glm::vec4 v(value.x);
+        gpu.writeMaterial(material, offsetof(GpuMaterial, specular) + 3 * sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::SectorLight: {
+        // The record holds level / 255 (GpuScene); the shader scales it back.
+        const glm::vec4 v(std::clamp(value.x, 0.0f, 255.0f) / 255.0f);
+        gpu.writeMaterial(material, offsetof(GpuMaterial, emissive) + 3 * sizeof(float), sizeof(float), &v.x);
         break;
     }
     }

@@ -37,7 +37,13 @@ enum class MaterialParameter {
     Roughness,     ///< x, perceptual
     PhongSpecular, ///< rgb specular colour ks of the classic models
     Shininess,     ///< x, Phong exponent (0 = from roughness)
+    /// rgb: the dielectric F0 over 0.04, KHR_materials_specular colour × F0(ior) / 0.04
+    /// (scene::f0FromIor); 1 = F0 0.04
+    SpecularColor,
+    SpecularFactor, ///< x, KHR_materials_specular factor (dielectric F0 and F90)
+    SectorLight,    ///< x, the Doom model's sector light level, 0–255
 };
+constexpr int kMaterialParameterCount = int(MaterialParameter::SectorLight) + 1;
 
 /// How the environment lights and shows in a frame (its content is set with setEnvironment).
 struct EnvironmentView {
@@ -66,7 +72,8 @@ struct FrameSettings {
     scene::MaterialShading materialOverride;
     glm::vec3 background{0.0f};            ///< radiance behind the scene, cd/m²
     glm::vec3 ambient{0.0f};               ///< constant ambient radiance for the diffuse lobe
-    bool gizmos = false;                   ///< draw every light as a disc in its colour (BillboardPass)
+    bool gizmos = false;                   ///< draw every light as a disc in its colour, with rods for directions and cones (BillboardPass)
+    int selectedLight = -1;                ///< the light whose gizmo is drawn larger (a viewer's selection); -1 = none
     EnvironmentView environment;
     /// Multiple-scattering compensation of the specular lobe (punctual and image-based light).
     /// Off = exactly the glTF BRDF for punctual lights.

@@ -197,6 +197,7 @@ enum class BillboardKind : uint32_t {
 enum class BuiltinSprite : uint32_t {
     Disc = 0, ///< soft round disc, white, alpha falling off towards the rim
     Tree = 1, ///< a conifer shape: brown trunk, green canopy, hard alpha edges for cutout
+    Bar = 2,  ///< white, opaque along its height, fading out across its width: rods, lines
 };
 
 /// One billboard of a group.
@@ -225,6 +226,10 @@ struct BillboardGroup {
     /// lit by it, as Doom's things were; scene/DoomLighting.h). The default, 255 (full bright),
     /// suits what billboards are otherwise: emitters.
     int sectorLight = 255;
+    /// ArbitraryAxis only: each quad's height is its billboard's axis vector, |axis| metres from
+    /// the anchor along it (size.y is unused), so a rod runs between given end points; size.x ×
+    /// scale stays the width, in pixels with sizeInPixels (a line of constant width on screen).
+    bool spanAxis = false;
     std::vector<Billboard> billboards;
 };
 

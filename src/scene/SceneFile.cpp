@@ -556,8 +556,8 @@ void parseBillboardGroup(const Object& object, Scene& scene, const fs::path& dir
     const bool arbitrary = group.kind == BillboardKind::ArbitraryAxis;
 
     object.notBoth("sprite", "image");
-    const std::string sprite = object.choice("sprite", {"disc", "tree"}).value_or("disc");
-    group.sprite = sprite == "tree" ? BuiltinSprite::Tree : BuiltinSprite::Disc;
+    const std::string sprite = object.choice("sprite", {"disc", "tree", "bar"}).value_or("disc");
+    group.sprite = sprite == "tree" ? BuiltinSprite::Tree : sprite == "bar" ? BuiltinSprite::Bar : BuiltinSprite::Disc;
     if (const auto file = object.string("image")) {
         if (file->empty()) object.fail("image", "must not be empty");
         const fs::path path = fs::path(*file).is_absolute() ? fs::path(*file) : directory / *file;

@@ -45,8 +45,8 @@ TEST(CliRender, Info)
 
 TEST(CliRender, GizmosDrawTheLights)
 {
-    // The demo's red point light sits at (-3.5, 1, 2); with --gizmos a disc of its colour marks it,
-    // so the image changes, and only where gizmos are drawn.
+    // The demo's red point light sits at (-3.5, 1, 2); with --gizmos a disc of its colour marks it
+    // (and rods the spot light's cone), so the image changes, and only where gizmos are drawn.
     const std::string dir = tempDir("gizmos");
     ASSERT_EQ(runCli("render --width 160 --height 90 --msaa 1 -o " + dir + "/plain.png").exitCode, 0);
     const auto r = runCli("render --width 160 --height 90 --msaa 1 --gizmos -o " + dir + "/gizmos.png");
@@ -58,7 +58,8 @@ TEST(CliRender, GizmosDrawTheLights)
     for (size_t i = 0; i < plain.pixels.size(); i += 4)
         if (plain.pixels[i] != gizmos.pixels[i] || plain.pixels[i + 1] != gizmos.pixels[i + 1] || plain.pixels[i + 2] != gizmos.pixels[i + 2])
             ++changed;
-    // Three or four 24-pixel discs in view (the sun's and spot's may fall outside): a few hundred pixels.
+    // Three or four 24-pixel discs in view (the sun's and spot's may fall outside), and the spot
+    // and sun lights' rods, 2-pixel lines: a few thousand pixels (2684 when written), far from all.
     EXPECT_GT(changed, 100u);
-    EXPECT_LT(changed, 2500u);
+    EXPECT_LT(changed, 5000u);
 }

@@ -5,8 +5,10 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <filesystem>
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/Program.h"
@@ -343,6 +345,214 @@ TEST_F(GlTest, LightGizmosAreDiscsOfTheLightColour)
     renderer.render(view, settings);
     const glm::vec2 movedAt = project(moved.position, view, 128, 128);
     EXPECT_NEAR(centrePixel(renderer.readRadiance(), int(movedAt.x), int(movedAt.y)).x, expected.x, expected.x * 2e-3f);
+}
+
+namespace {
+
+/// Linear radiance at a window position (image rows), 0 outside the image.
+glm::vec3 radianceAt(const ImageFloat& image, glm::vec2 at)
+{
+    const int x = int(std::floor(at.x)), y = int(std::floor(at.y));
+    if (x < 0 || y < 0 || x >= image.width || y >= image.height) return glm::vec3(0.0f);
+    return centrePixel(image, x, y);
+}
+
+/// The brightest green radiance within `radius` pixels of `at` (a rod is thin: the segment's
+/// exact pixel may sit half a pixel off its centre line).
+float greenNear(const ImageFloat& image, glm::vec2 at, int radius)
+{
+    float best = 0.0f;
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx) best = std::max(best, radianceAt(image, at + glm::vec2(dx, dy)).g);
+    return best;
+}
+
+/// Fraction of the points at t in [t0, t1] along the projected segment a → b with a lit pixel
+/// (green radiance above `threshold`) within one pixel.
+float litAlong(const ImageFloat& image, glm::vec2 a, glm::vec2 b, float t0, float t1, float threshold)
+{
+    int lit = 0, total = 0;
+    for (float t = t0; t <= t1 + 1e-4f; t += 0.02f, ++total)
+        if (greenNear(image, glm::mix(a, b, t), 1) > threshold) ++lit;
+    return float(lit) / float(total);
+}
+
+/// Distance from `p` to the convex polygon `hull` (either winding): 0 inside.
+float distanceToConvexHull(const std::vector<glm::vec2>& hull, glm::vec2 p)
+{
+    bool inside = true;
+    float nearest = 1e30f;
+    float sign = 0.0f;
+    for (size_t i = 0; i < hull.size(); ++i) {
+        const glm::vec2 a = hull[i], b = hull[(i + 1) % hull.size()];
+        const glm::vec2 e = b - a;
+        const float cross = e.x * (p.y - a.y) - e.y * (p.x - a.x);
+        if (sign == 0.0f && cross != 0.0f) sign = cross > 0.0f ? 1.0f : -1.0f;
+        if (cross * sign < 0.0f) inside = false;
+        const float t = std::clamp(glm::dot(p - a, e) / std::max(glm::dot(e, e), 1e-12f), 0.0f, 1.0f);
+        nearest = std::min(nearest, glm::distance(p, a + t * e));
+    }
+    return inside ? 0.0f : nearest;
+}
+
+/// Convex hull of 2D points (Andrew's monotone chain).
+std::vector<glm::vec2> convexHull(std::vector<glm::vec2> points)
+{
+    std::sort(points.begin(), points.end(), [](glm::vec2 a, glm::vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    auto cross = [](glm::vec2 o, glm::vec2 a, glm::vec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+    std::vector<glm::vec2> hull(2 * points.size());
+    size_t k = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+        while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0f) --k;
+        hull[k++] = points[i];
+    }
+    for (size_t i = points.size() - 1, t = k + 1; i > 0; --i) {
+        while (k >= t && cross(hull[k - 2], hull[k - 1], points[i - 1]) <= 0.0f) --k;
+        hull[k++] = points[i - 1];
+    }
+    hull.resize(k - 1);
+    return hull;
+}
+
+} // namespace
+
+// The expectation is the light itself, not the gizmo code: the rod along a spot light's
+// direction covers the segment from its position to position + direction × range, projected
+// with the camera on the CPU; the cone's rods stay inside the projected cone (out to the range)
+// and reach out to its rim; all move when the light turns.
+TEST_F(GlTest, LightGizmoRodsShowDirectionAndCone)
+{
+    constexpr int kW = 320, kH = 240;
+    scene::Scene s; // no surfaces, no environment: every lit pixel is a gizmo's
+    scene::Light spot;
+    spot.type = scene::Light::Type::Spot;
+    spot.color = {0.2f, 1.0f, 0.4f};
+    spot.range = 1.6f;
+    spot.innerConeAngle = glm::radians(10.0f);
+    spot.outerConeAngle = glm::radians(30.0f);
+    const glm::vec3 apex(-0.8f, -0.1f, 0.0f);
+    // Tilted a little, so the rod crosses pixel rows at every sub-pixel offset along its length.
+    const glm::vec3 direction = glm::normalize(glm::vec3(1.0f, 0.1f, 0.0f));
+    scene::addLight(s, spot, apex, direction);
+    // From afar with a narrow field: little perspective, so the cone seen from the side is close
+    // to the triangle an orthographic view would show.
+    const render::View view = render::lookAtView({0, 0, 8}, {0, 0, 0}, {0, 1, 0}, glm::radians(22.0f), float(kW) / kH, 0.1f, 20.0f);
+    render::FrameSettings settings = settingsFor(kW, kH);
+    settings.gizmos = true;
+    render::Renderer renderer;
+    renderer.setScene(s);
+    renderer.render(view, settings);
+    const ImageFloat image = renderer.readRadiance();
+    const std::filesystem::path out = std::filesystem::path(SPECULA_TEST_OUTPUT_DIR) / "billboards";
+    std::filesystem::create_directories(out);
+    writePng(out / "gizmo-rods.png", renderer.readImage()); // for review by eye
+
+    // Lit = more than a third of the rod's radiance (the bar sprite's soft sides are fainter);
+    // the inner cone's rods (kGizmoInnerConeTint) stay below that.
+    const float threshold = render::kGizmoRodRadiance * spot.color.g / 3.0f;
+    ASSERT_LT(render::kGizmoInnerConeTint, 1.0f / 3.0f);
+    const float discRadius = 0.5f * render::kGizmoSizePixels + 1.0f;
+    const glm::vec2 a = project(apex, view, kW, kH);
+    const glm::vec2 end = project(apex + direction * spot.range, view, kW, kH);
+    // From outside the disc to the rod's far end.
+    const float t0 = discRadius / glm::distance(a, end);
+    EXPECT_GT(litAlong(image, a, end, t0, 0.97f, threshold), 0.95f) << "no rod along the light's direction";
+    EXPECT_LT(greenNear(image, glm::mix(a, end, 1.06f), 1), threshold) << "the direction rod is longer than the range";
+    // Gizmo-coloured: the light's colour x kGizmoRodRadiance x the sprite's cover.
+    const glm::vec3 mid = radianceAt(image, glm::mix(a, end, 0.5f));
+    EXPECT_GT(mid.g, threshold);
+    EXPECT_NEAR(mid.r / mid.g, spot.color.r / spot.color.g, 0.02f);
+    EXPECT_NEAR(mid.b / mid.g, spot.color.b / spot.color.g, 0.02f);
+
+    // The cone's outline on screen: the convex hull of the apex and the cap of the sphere of
+    // radius range within the outer angle of the direction (where the rods end).
+    auto coneOutline = [&](glm::vec3 d, float outer, float* rimReach) {
+        const glm::vec3 u = glm::normalize(glm::cross(d, glm::vec3(0, 0, 1)));
+        const glm::vec3 v = glm::cross(d, u);
+        std::vector<glm::vec2> points{a};
+        *rimReach = 0.0f; // largest screen distance of the cone's rim from the projected axis line
+        const glm::vec2 axis = glm::normalize(project(apex + d * spot.range, view, kW, kH) - a);
+        for (int i = 0; i <= 8; ++i) {
+            const float angle = outer * float(i) / 8.0f;
+            for (int k = 0; k < 360; k += 2) {
+                const float phi = glm::radians(float(k));
+                const glm::vec3 edge = std::cos(angle) * d + std::sin(angle) * (std::cos(phi) * u + std::sin(phi) * v);
+                points.push_back(project(apex + edge * spot.range, view, kW, kH));
+                const glm::vec2 off = points.back() - a;
+                if (i == 8) *rimReach = std::max(*rimReach, std::abs(off.x * axis.y - off.y * axis.x));
+            }
+        }
+        return convexHull(points);
+    };
+    // The rods' farthest reach from the projected axis line, outside the disc.
+    auto farthestFromAxis = [&](const ImageFloat& im, glm::vec3 d) {
+        const glm::vec2 axis = glm::normalize(project(apex + d * spot.range, view, kW, kH) - a);
+        float farthest = 0.0f;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x) {
+                const glm::vec2 off = glm::vec2(x + 0.5f, y + 0.5f) - a;
+                if (centrePixel(im, x, y).g > threshold && glm::length(off) > discRadius)
+                    farthest = std::max(farthest, std::abs(off.x * axis.y - off.y * axis.x));
+            }
+        return farthest;
+    };
+    // Every lit pixel lies inside the outline give or take 2 pixels (a rod's half width and a
+    // pixel of rasterisation), and the rods reach out to near the rim's projection: at least 80%
+    // of the way, as 8 evenly spread rods leave at most 22.5° between the rim's top and the
+    // nearest rod (cos 22.5° = 0.92; the rest is perspective). Which azimuths the rods take is
+    // the implementation's choice.
+    float rimReach = 0.0f;
+    const std::vector<glm::vec2> hull = coneOutline(direction, spot.outerConeAngle, &rimReach);
+    int outside = 0;
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            const glm::vec2 p(float(x) + 0.5f, float(y) + 0.5f);
+            if (centrePixel(image, x, y).g <= threshold || glm::distance(p, a) <= discRadius) continue;
+            if (distanceToConvexHull(hull, p) > 2.0f) ++outside;
+        }
+    }
+    EXPECT_EQ(outside, 0) << "lit pixels outside the light's cone";
+    const float reach = farthestFromAxis(image, direction);
+    EXPECT_GT(reach, 0.8f * rimReach) << "the cone's rods do not reach its rim";
+    EXPECT_LT(reach, rimReach + 2.0f);
+
+    // Turning the light: the rod follows, and none is left along the old direction.
+    render::PlacedLight turned = renderer.lights().light(0);
+    turned.direction = {0, 1, 0};
+    renderer.lights().set(0, turned);
+    renderer.render(view, settings);
+    const ImageFloat after = renderer.readRadiance();
+    const glm::vec2 up = project(apex + glm::vec3(0, 1, 0) * spot.range, view, kW, kH);
+    EXPECT_GT(litAlong(after, a, up, discRadius / glm::distance(a, up), 0.97f, threshold), 0.95f) << "no rod along the new direction";
+    EXPECT_LT(litAlong(after, a, end, 0.6f, 0.97f, threshold), 0.05f) << "a rod stayed along the old direction";
+
+    // A wider cone reaches further from the axis, as far as its own rim.
+    turned.direction = direction;
+    turned.light.outerConeAngle = glm::radians(45.0f);
+    renderer.lights().set(0, turned);
+    renderer.render(view, settings);
+    float widerRim = 0.0f;
+    coneOutline(direction, turned.light.outerConeAngle, &widerRim);
+    const float widerReach = farthestFromAxis(renderer.readRadiance(), direction);
+    EXPECT_GT(widerReach, 0.8f * widerRim);
+    EXPECT_GT(widerReach, reach + 10.0f) << "the cone's rods did not follow the cone angle";
+
+    // The selected light's rod is wider: the radiance summed across the rod (its width in
+    // pixels times the sprite's mean cover), averaged along it, grows by kGizmoSelectedScale.
+    turned.light.outerConeAngle = spot.outerConeAngle;
+    renderer.lights().set(0, turned);
+    auto across = [&](const ImageFloat& im) {
+        float sum = 0.0f;
+        for (float t = 0.55f; t <= 0.9f; t += 0.01f)
+            for (int dy = -6; dy <= 6; ++dy) sum += radianceAt(im, glm::mix(a, end, t) + glm::vec2(0.0f, float(dy))).g;
+        return sum;
+    };
+    renderer.render(view, settings);
+    const float plain = across(renderer.readRadiance());
+    settings.selectedLight = 0;
+    renderer.render(view, settings);
+    const float selected = across(renderer.readRadiance());
+    EXPECT_NEAR(selected / plain, render::kGizmoSelectedScale, 0.2f);
 }
 
 TEST_F(GlTest, BillboardInstanceLayoutMatchesGlsl)

@@ -3,6 +3,8 @@
 // the built-in sprites.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -282,24 +284,90 @@ TEST(Billboard, LightGizmos)
     lights[0].light.color = {1.0f, 0.5f, 0.25f};
     lights[0].position = {1, 2, 3};
     lights[1].light.type = scene::Light::Type::Spot;
+    lights[1].light.range = 2.5f;
+    lights[1].light.innerConeAngle = glm::radians(10.0f);
+    lights[1].light.outerConeAngle = glm::radians(30.0f);
     lights[1].position = {-1, 4, 0};
+    lights[1].direction = {0, 0, -3}; // not unit: rods run along the unit direction
     lights[2].light.type = scene::Light::Type::Directional;
     lights[2].direction = {0, -2, 0}; // shining down: its gizmo sits above the scene
     scene::Bounds bounds;
     bounds.extend(glm::vec3(-1, 0, -1));
     bounds.extend(glm::vec3(3, 2, 1));
-    const scene::BillboardGroup gizmos = render::makeLightGizmos(lights, bounds);
-    EXPECT_EQ(gizmos.kind, BillboardKind::PointSprite);
-    EXPECT_TRUE(gizmos.sizeInPixels);
-    EXPECT_EQ(gizmos.size, glm::vec2(render::kGizmoSizePixels));
-    EXPECT_EQ(gizmos.alphaMode, scene::AlphaMode::Blend);
-    ASSERT_EQ(gizmos.billboards.size(), 3u);
-    EXPECT_EQ(gizmos.billboards[0].position, glm::vec3(1, 2, 3));
-    EXPECT_EQ(gizmos.billboards[0].tint, glm::vec3(1.0f, 0.5f, 0.25f));
-    EXPECT_EQ(gizmos.tint, glm::vec3(render::kGizmoRadiance));
-    EXPECT_EQ(gizmos.billboards[1].position, glm::vec3(-1, 4, 0));
+    const render::LightGizmos gizmos = render::makeLightGizmos(lights, bounds, 1);
+    const scene::BillboardGroup& discs = gizmos.discs;
+    EXPECT_EQ(discs.kind, BillboardKind::PointSprite);
+    EXPECT_TRUE(discs.sizeInPixels);
+    EXPECT_EQ(discs.size, glm::vec2(render::kGizmoSizePixels));
+    EXPECT_EQ(discs.alphaMode, scene::AlphaMode::Blend);
+    ASSERT_EQ(discs.billboards.size(), 3u);
+    EXPECT_EQ(discs.billboards[0].position, glm::vec3(1, 2, 3));
+    EXPECT_EQ(discs.billboards[0].tint, glm::vec3(1.0f, 0.5f, 0.25f));
+    EXPECT_EQ(discs.tint, glm::vec3(render::kGizmoRadiance));
+    EXPECT_EQ(discs.billboards[1].position, glm::vec3(-1, 4, 0));
     // centre − direction × radius: (1, 1, 0) + (0, 1, 0) × √6.
-    EXPECT_NEAR(glm::distance(gizmos.billboards[2].position, glm::vec3(1.0f, 1.0f + std::sqrt(6.0f), 0.0f)), 0.0f, 1e-5f);
+    const float radius = std::sqrt(6.0f);
+    EXPECT_NEAR(glm::distance(discs.billboards[2].position, glm::vec3(1.0f, 1.0f + radius, 0.0f)), 0.0f, 1e-5f);
+    // The selected light (1) is drawn larger, the others at their size.
+    EXPECT_EQ(discs.billboards[0].scale, 1.0f);
+    EXPECT_EQ(discs.billboards[1].scale, render::kGizmoSelectedScale);
+
+    const scene::BillboardGroup& rods = gizmos.rods;
+    EXPECT_EQ(rods.kind, BillboardKind::ArbitraryAxis);
+    EXPECT_TRUE(rods.spanAxis);
+    EXPECT_TRUE(rods.sizeInPixels);
+    EXPECT_EQ(rods.size.x, render::kGizmoRodPixels);
+    EXPECT_EQ(rods.anchor, glm::vec2(0.5f, 0.0f)); // each rod starts at its position
+    EXPECT_EQ(rods.sprite, scene::BuiltinSprite::Bar);
+    EXPECT_EQ(rods.tint, glm::vec3(render::kGizmoRodRadiance));
+    // The point light has none; the spot light its cones and its direction; the directional one
+    // its direction.
+    ASSERT_EQ(rods.billboards.size(), size_t(render::kGizmoInnerConeRods + render::kGizmoOuterConeRods + 1 + 1));
+    int inner = 0, outer = 0, along = 0;
+    for (size_t i = 0; i + 1 < rods.billboards.size(); ++i) {
+        const scene::Billboard& rod = rods.billboards[i];
+        EXPECT_EQ(rod.position, glm::vec3(-1, 4, 0));
+        EXPECT_EQ(rod.scale, render::kGizmoSelectedScale);
+        EXPECT_NEAR(glm::length(rod.axis), 2.5f, 1e-5f) << "as long as the range";
+        const float angle = std::acos(std::clamp(glm::dot(glm::normalize(rod.axis), glm::vec3(0, 0, -1)), -1.0f, 1.0f));
+        if (std::abs(angle - glm::radians(10.0f)) < 1e-3f) {
+            ++inner;
+            EXPECT_EQ(rod.tint, glm::vec3(render::kGizmoInnerConeTint));
+        } else if (std::abs(angle - glm::radians(30.0f)) < 1e-3f) {
+            ++outer;
+            EXPECT_EQ(rod.tint, glm::vec3(1.0f));
+        } else if (angle < 1e-3f) {
+            ++along;
+        }
+    }
+    EXPECT_EQ(inner, render::kGizmoInnerConeRods);
+    EXPECT_EQ(outer, render::kGizmoOuterConeRods);
+    EXPECT_EQ(along, 1);
+    // The directional light's rod: from its disc to the centre of the bounds.
+    const scene::Billboard& sun = rods.billboards.back();
+    EXPECT_EQ(sun.position, discs.billboards[2].position);
+    EXPECT_NEAR(glm::distance(sun.position + sun.axis, glm::vec3(1, 1, 0)), 0.0f, 1e-5f);
+    EXPECT_EQ(sun.scale, 1.0f);
+
+    // Without a range a spot light's rods reach the centre of the bounds (at least the radius).
+    lights[1].light.range = 0.0f;
+    const render::LightGizmos unbounded = render::makeLightGizmos(lights, bounds);
+    const float toCentre = glm::distance(glm::vec3(-1, 4, 0), glm::vec3(1, 1, 0));
+    EXPECT_NEAR(glm::length(unbounded.rods.billboards[0].axis), std::max(toCentre, radius), 1e-5f);
+}
+
+TEST(Billboard, BarSpriteIsSolidAlongItsHeight)
+{
+    const scene::Image bar = render::makeBuiltinSprite(scene::BuiltinSprite::Bar, 32);
+    ASSERT_EQ(bar.width, 32);
+    ASSERT_EQ(bar.height, 32);
+    auto alpha = [&](int x, int y) { return bar.pixels[(size_t(y) * 32 + size_t(x)) * 4 + 3]; };
+    for (int y = 0; y < 32; ++y) {
+        EXPECT_EQ(alpha(16, y), 255) << "row " << y; // the middle, top to bottom
+        EXPECT_EQ(alpha(0, y), 0);                   // the sides fade to nothing
+        EXPECT_EQ(alpha(31, y), 0);
+        EXPECT_EQ(alpha(8, y), alpha(8, 0));         // the same profile on every row
+    }
 }
 
 TEST(Billboard, SceneAppendPlacesBillboards)

@@ -172,7 +172,7 @@ TEST(SceneFileBillboards, Errors)
         {R"({"billboards": [{"kind": "sphere", "position": [0, 0, 0]}]})",
          "scene.json: billboards[0].kind must be point-sprite, axis-aligned or arbitrary-axis (got 'sphere')"},
         {R"({"billboards": [{"sprite": "cloud", "position": [0, 0, 0]}]})",
-         "scene.json: billboards[0].sprite must be disc or tree (got 'cloud')"},
+         "scene.json: billboards[0].sprite must be disc, tree or bar (got 'cloud')"},
         {R"({"billboards": [{"sprite": "tree", "image": "a.png", "position": [0, 0, 0]}]})",
          "scene.json: billboards[0] has both 'sprite' and 'image'; give one"},
         {R"({"billboards": [{"name": "empty"}]})", "scene.json: billboards[0] needs 'position', 'billboards' or 'scatter'"},

@@ -1,0 +1,88 @@
+#include "render/BrdfPlot.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/Brdf.h"
+
+namespace specula::render {
+namespace {
+
+float luminance(const glm::dvec3& c)
+{
+    return float(0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b);
+}
+
+BrdfPlotKind kindOf(scene::ShadingModel model)
+{
+    switch (model) {
+    case scene::ShadingModel::Pbr: return BrdfPlotKind::Microfacet;
+    case scene::ShadingModel::Flat:
+    case scene::ShadingModel::Gouraud:
+    case scene::ShadingModel::Phong:
+    case scene::ShadingModel::BlinnPhong: return BrdfPlotKind::Classic;
+    case scene::ShadingModel::Unlit:
+    case scene::ShadingModel::Doom: return BrdfPlotKind::None;
+    }
+    return BrdfPlotKind::None;
+}
+
+} // namespace
+
+BrdfCurves sampleBrdfCurves(const BrdfPlotMaterial& m, const ResolvedShading& shading, double viewDegrees, int samples)
+{
+    BrdfCurves curves;
+    curves.kind = kindOf(shading.model);
+    if (curves.kind == BrdfPlotKind::None || samples < 2) return curves;
+
+    const double r = std::clamp(m.perceptualRoughness, brdf::kMinPerceptualRoughness, 1.0);
+    const double metallic = std::clamp(m.metallic, 0.0, 1.0);
+    brdf::Surface surface;
+    surface.baseColor = m.baseColor;
+    surface.metallic = metallic;
+    surface.perceptualRoughness = r;
+    surface.specularFactor = m.specularFactor;
+    surface.specularColor = m.specularColor;
+    surface.f0Dielectric = 0.04; // specularColor carries the ior, as the record does
+    surface.distribution = shading.distribution;
+    surface.geometry = shading.geometry;
+    surface.fresnel = shading.fresnel;
+    surface.diffuse = shading.diffuse;
+    // The same F0 and F90 as brdf::evaluate and makeSurfaceBrdf in shaders/brdf/brdf.glsl.
+    const glm::dvec3 f0 = glm::mix(glm::min(0.04 * m.specularColor, glm::dvec3(1.0)) * m.specularFactor, m.baseColor, metallic);
+    const double f90 = m.specularFactor + (1.0 - m.specularFactor) * metallic;
+    const glm::dvec3 kd = m.baseColor * (1.0 - metallic);
+    const glm::dvec3 ks = glm::mix(m.phongSpecular, m.baseColor, metallic);
+    curves.shininess = m.shininess > 0.0 ? m.shininess : brdf::classicShininess(r);
+    const bool blinn = shading.model == scene::ShadingModel::BlinnPhong;
+
+    const glm::dvec3 n(0.0, 0.0, 1.0);
+    const double thetaV = glm::radians(viewDegrees);
+    const glm::dvec3 view(-std::sin(thetaV), 0.0, std::cos(thetaV));
+    for (int k = 0; k < samples; ++k) {
+        const double degrees = -89.0 + 178.0 * double(k) / double(samples - 1);
+        const double thetaL = glm::radians(degrees);
+        const glm::dvec3 l(std::sin(thetaL), 0.0, std::cos(thetaL));
+        const double NoL = std::clamp(glm::dot(n, l), 0.0, 1.0);
+        curves.lightDegrees.push_back(float(degrees));
+        if (curves.kind == BrdfPlotKind::Classic) {
+            const double lobe = blinn ? std::clamp(glm::dot(n, glm::normalize(l + view)), 0.0, 1.0)
+                                      : std::clamp(glm::dot(glm::reflect(-l, n), view), 0.0, 1.0);
+            curves.d.push_back(float(std::pow(lobe, curves.shininess)));
+            curves.whole.push_back(luminance(brdf::evaluateClassic(kd, ks, curves.shininess, blinn, n, view, l)));
+            continue;
+        }
+        // The clamps of brdf::evaluate (and evaluateBrdfLobes in the shader).
+        const glm::dvec3 h = glm::normalize(view + l);
+        const double NoV = std::abs(glm::dot(n, view));
+        const double NoH = std::clamp(glm::dot(n, h), 0.0, 1.0);
+        const double VoH = std::clamp(glm::dot(view, h), 0.0, 1.0);
+        curves.d.push_back(float(brdf::distribution(shading.distribution, NoH, r * r)));
+        curves.v.push_back(float(brdf::visibility(shading.geometry, NoV, NoL, NoH, VoH, r)));
+        curves.f.push_back(luminance(brdf::fresnel(shading.fresnel, f0, f90, VoH)));
+        curves.whole.push_back(luminance(brdf::evaluate(surface, n, view, l)) * float(NoL));
+    }
+    return curves;
+}
+
+} // namespace specula::render
