@@ -3,10 +3,8 @@
 // and the palette's colour tables (doom/palette.glsl). Doom's textures were palette indices
 // and its colour map turned (level, index) into the index the screen showed; here the base
 // colour becomes its palette index through the nearest-index table. Lights, environment and
-// emission are ignored. Included by pbr.frag through shading_models.glsl in every variant, not
-// under #if SHADING_DOOM: the include loader inserts each file once and does not evaluate #if,
-// so common/color.glsl, first included here under a false condition, would be missing from
-// debug_views.glsl. Only SHADING_DOOM calls it.
+// emission are ignored. Included by pbr.frag through shading_models.glsl in every variant;
+// only SHADING_DOOM (and a Doom frame's DOOM_INDEXED) call it.
 #include "../doom/light.glsl"
 #include "../doom/palette.glsl"
 

@@ -24,7 +24,6 @@ struct Loader {
     fs::path root;
     std::vector<std::string> files;  // relative paths, index = source-string number
     std::vector<std::string> stack;  // for cycle reports
-    std::vector<std::string> done;   // include once
     std::string out;
     std::string defines;
     bool sawVersion = false;
@@ -55,9 +54,6 @@ struct Loader {
                 throw Error("shader include cycle: {}{}", cycle, relative);
             }
         }
-        for (const auto& name : done)
-            if (name == relative) return;
-
         const fs::path full = root / relative;
         std::error_code ec;
         if (!fs::is_regular_file(full, ec)) {
@@ -67,6 +63,11 @@ struct Loader {
         const std::string text = readFile(full);
         stack.push_back(relative);
         const int index = fileIndex(relative);
+        // Include once, decided by the GLSL preprocessor: a guard per file. The loader cannot
+        // skip a second include itself, as it does not evaluate #if: a file first included in
+        // a branch the preprocessor drops would then be missing where it is included again.
+        const bool included = stack.size() > 1;
+        if (included) out += fmt::format("#ifndef SPECULA_INCLUDED_{0}\n#define SPECULA_INCLUDED_{0}\n", index);
 
         std::istringstream lines(text);
         std::string line;
@@ -101,8 +102,8 @@ struct Loader {
             out += line;
             out += '\n';
         }
+        if (included) out += "#endif\n";
         stack.pop_back();
-        done.push_back(relative);
     }
 };
 

@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cstdlib>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include "core/Error.h"
 #include "gl/ShaderSource.h"
@@ -36,8 +39,12 @@ TEST_F(ShaderSourceTest, ResolvesIncludesOnceWithLineDirectives)
     write("main.frag", "#version 450 core\n#include \"brdf/ggx.glsl\"\n#include \"common/math.glsl\"\nvoid main() {}\n");
     const gl::ShaderSource source = gl::loadShaderSource(root, "main.frag", {"FOO 1"});
     EXPECT_EQ(source.text.rfind("#version 450 core\n#define FOO 1\n", 0), 0u) << source.text;
-    // math.glsl included twice, emitted once.
-    EXPECT_EQ(source.text.find("const float PI"), source.text.rfind("const float PI"));
+    // math.glsl included twice: emitted twice, each time inside the same guard, so the GLSL
+    // preprocessor keeps the first (IncludeOnceFollowsThePreprocessor compiles this).
+    const size_t first = source.text.find("const float PI"), second = source.text.rfind("const float PI");
+    EXPECT_NE(first, second);
+    EXPECT_NE(source.text.rfind("#ifndef SPECULA_INCLUDED_2\n#define SPECULA_INCLUDED_2\n", first), std::string::npos);
+    EXPECT_NE(source.text.find("#ifndef SPECULA_INCLUDED_2\n#define SPECULA_INCLUDED_2\n", first), std::string::npos);
     ASSERT_EQ(source.files.size(), 3u);
     EXPECT_EQ(source.files[0], "main.frag");
     EXPECT_EQ(source.files[1], "brdf/ggx.glsl");
@@ -81,4 +88,24 @@ TEST(ShaderLog, MapsMesaAndNvidiaReferencesToFiles)
               "shaders/forward/pbr.frag:7: error C1008: undefined variable \"y\"");
     EXPECT_EQ(gl::mapShaderLog("0:100041(3): error: z", files), "shaders/brdf/ggx.glsl:41: error: z");
     EXPECT_EQ(gl::mapShaderLog("something else", files), "something else");
+}
+
+// A file first included where the preprocessor drops it is still there where it is included
+// again: include-once is the GLSL preprocessor's decision (guards), not the loader's. Checked
+// by compiling with glslangValidator: a loader that skipped the second include fails with
+// "undeclared identifier".
+TEST_F(ShaderSourceTest, IncludeOnceFollowsThePreprocessor)
+{
+    ASSERT_EQ(std::system("command -v glslangValidator >/dev/null"), 0) << "glslangValidator missing (Debian: glslang-tools)";
+    write("common/math.glsl", "const float PI = 3.14;\n");
+    write("main.frag", "#version 450 core\n#if defined(NEVER)\n#include \"common/math.glsl\"\n#endif\n"
+                       "#include \"common/math.glsl\"\n#include \"common/math.glsl\"\n"
+                       "layout(location = 0) out vec4 colour;\nvoid main() { colour = vec4(PI); }\n");
+    const gl::ShaderSource source = gl::loadShaderSource(root, "main.frag", {});
+    std::ofstream(root / "expanded.frag") << source.text;
+    const fs::path log = root / "log.txt";
+    const int status = std::system(("glslangValidator " + (root / "expanded.frag").string() + " >" + log.string() + " 2>&1").c_str());
+    std::ifstream in(log);
+    const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(status, 0) << gl::mapShaderLog(output, source.files) << "\n" << source.text;
 }
