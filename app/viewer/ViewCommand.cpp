@@ -97,6 +97,10 @@ int runView(const ViewArgs& args)
 
     while (!context->shouldClose()) {
         context->pollEvents();
+        if (interactive && glm::any(glm::lessThanEqual(context->framebufferSize(), glm::ivec2(0)))) {
+            context->waitEvents(0.1); // minimised: nothing to draw, no frames to spin through
+            continue;
+        }
         for (const std::string& path : std::exchange(dropped, {})) viewer.openFile(path);
         if (interactive && watchClock.elapsedMs() > 500.0) {
             // Hot reload: a changed shader file rebuilds the programs; errors show in the UI.

@@ -176,7 +176,13 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         if (w.size() > 3 && picked != w.integer(3)) throw Error("picked material {}, expected {}", picked, w.integer(3));
         return 0;
     }
-    if (a == "select-material") { viewer.selectedMaterial = w.integer(1); return 0; }
+    if (a == "select-material") {
+        const int index = w.integer(1);
+        if (index < 0 || index >= viewer.renderer().materialCount())
+            throw Error("no material {} (there are {})", index, viewer.renderer().materialCount());
+        viewer.selectedMaterial = index;
+        return 0;
+    }
     if (a == "material-model") {
         const auto model = scene::parseShadingModel(w.text(2));
         if (!model) throw Error("unknown shading model '{}' ({})", w.text(2), scene::shadingModelNames());

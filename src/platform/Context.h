@@ -31,6 +31,8 @@ public:
     virtual void makeCurrent() = 0;
     virtual void swapBuffers() {}
     virtual void pollEvents() {}
+    /// Sleeps until an event arrives or `seconds` pass (a minimised window has nothing to draw).
+    virtual void waitEvents(double seconds) { (void)seconds; }
     virtual bool shouldClose() const { return false; }
     /// Size of the default framebuffer; (0, 0) for headless contexts.
     virtual glm::ivec2 framebufferSize() const { return {0, 0}; }

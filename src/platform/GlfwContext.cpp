@@ -38,6 +38,7 @@ public:
     void makeCurrent() override { glfwMakeContextCurrent(mWindow); }
     void swapBuffers() override { glfwSwapBuffers(mWindow); }
     void pollEvents() override { glfwPollEvents(); }
+    void waitEvents(double seconds) override { glfwWaitEventsTimeout(seconds); }
     bool shouldClose() const override { return glfwWindowShouldClose(mWindow); }
     glm::ivec2 framebufferSize() const override
     {

@@ -135,7 +135,7 @@ void writeTwoSquares(const std::filesystem::path& path)
 
 TEST(CliViewer, FramesThenScreenshot)
 {
-    if (!haveDisplay()) GTEST_SKIP() << "no display (run through scripts/test.sh, which uses Xvfb)";
+    ASSERT_TRUE(haveDisplay()) << "no display: run through scripts/test.sh, which uses Xvfb (a window test must not skip)";
     const std::string dir = tempDir("viewer-frames");
     const auto r = runCli("view --frames 3 --screenshot " + dir + "/demo.png --width 160 --height 120");
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -151,7 +151,7 @@ TEST(CliViewer, FramesThenScreenshot)
 // drawn, a bad file dropped.
 TEST(CliViewer, ScriptEditsLightMaterialAndBloom)
 {
-    if (!haveDisplay()) GTEST_SKIP() << "no display (run through scripts/test.sh, which uses Xvfb)";
+    ASSERT_TRUE(haveDisplay()) << "no display: run through scripts/test.sh, which uses Xvfb (a window test must not skip)";
     const std::string dir = tempDir("viewer-script");
     std::ofstream(dir + "/script.txt") << "frames 2\n"
                                           "screenshot " << dir << "/start.png\n"
@@ -229,7 +229,7 @@ TEST(CliViewer, ScriptEditsLightMaterialAndBloom)
 // to the last row and column, and the frame is the one a viewer started at that size renders.
 TEST(CliViewer, ResizingTheWindowRendersAllOfIt)
 {
-    if (!haveDisplay()) GTEST_SKIP() << "no display (run through scripts/test.sh, which uses Xvfb)";
+    ASSERT_TRUE(haveDisplay()) << "no display: run through scripts/test.sh, which uses Xvfb (a window test must not skip)";
     const std::string dir = tempDir("viewer-resize");
     std::ofstream(dir + "/resize.txt") << "toggle ui\n"
                                           "frames 1\n"
@@ -275,7 +275,7 @@ TEST(CliViewer, ResizingTheWindowRendersAllOfIt)
 
 TEST(CliViewer, ScriptErrorsNameFileAndLine)
 {
-    if (!haveDisplay()) GTEST_SKIP() << "no display (run through scripts/test.sh, which uses Xvfb)";
+    ASSERT_TRUE(haveDisplay()) << "no display: run through scripts/test.sh, which uses Xvfb (a window test must not skip)";
     const std::string dir = tempDir("viewer-bad-script");
     std::ofstream(dir + "/bad.txt") << "frames 1\nspin 3\n";
     const auto r = runCli("view --width 64 --height 48 --script " + dir + "/bad.txt");
@@ -284,6 +284,10 @@ TEST(CliViewer, ScriptErrorsNameFileAndLine)
     const auto missing = runCli("view --width 64 --height 48 --script " + dir + "/none.txt");
     EXPECT_NE(missing.exitCode, 0);
     EXPECT_NE(missing.err.find("cannot read script"), std::string::npos) << missing.err;
+    std::ofstream(dir + "/material.txt") << "select-material 99\n";
+    const auto material = runCli("view --width 64 --height 48 --script " + dir + "/material.txt");
+    EXPECT_NE(material.exitCode, 0);
+    EXPECT_NE(material.err.find("material.txt:1: no material 99"), std::string::npos) << material.err;
 }
 
 // Hot reload as the interactive viewer does it (ShaderWatcher's poll, here from the script): an
@@ -291,7 +295,7 @@ TEST(CliViewer, ScriptErrorsNameFileAndLine)
 // with file and line while the last good programs keep rendering; fixing the files recovers.
 TEST(CliViewer, HotReloadRecompilesKeepsTheLastGoodProgramsAndRecovers)
 {
-    if (!haveDisplay()) GTEST_SKIP() << "no display (run through scripts/test.sh, which uses Xvfb)";
+    ASSERT_TRUE(haveDisplay()) << "no display: run through scripts/test.sh, which uses Xvfb (a window test must not skip)";
     namespace fs = std::filesystem;
     const fs::path dir = tempDir("viewer-hot-reload");
     const fs::path shaders = dir / "shaders";
@@ -370,7 +374,7 @@ TEST(CliViewer, HotReloadRecompilesKeepsTheLastGoodProgramsAndRecovers)
 // which rebuilds the renderer from the files.
 TEST(CliViewer, MaterialEditsSurviveAShaderReload)
 {
-    if (!haveDisplay()) GTEST_SKIP() << "no display (run through scripts/test.sh, which uses Xvfb)";
+    ASSERT_TRUE(haveDisplay()) << "no display: run through scripts/test.sh, which uses Xvfb (a window test must not skip)";
     const std::string dir = tempDir("viewer-reload-materials");
     writeTwoSquares(dir + "/squares.gltf");
     std::ofstream(dir + "/edit.txt") << "frames 1\n"
