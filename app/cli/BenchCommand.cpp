@@ -86,6 +86,7 @@ int runBench(const BenchArgs& args)
             s.view = prepareView(s.document, args.frame, s.settings, nullptr, s.environment);
             s.loadMs = startup.elapsedMs() - s.contextMs;
             s.renderer = std::make_unique<render::Renderer>();
+            s.renderer->setCacheDirectory(cache);
             s.renderer->setScene(s.document.scene);
             if (environment) s.bake = s.renderer->setEnvironment(*environment, resolveBakeSettings(args.frame), cache);
             s.renderer->render(s.view, s.settings);

@@ -48,6 +48,7 @@ int runGallery(const GalleryArgs& args)
     auto context = platform::Context::createHeadless();
     gl::DebugMonitor debug;
     render::Renderer renderer;
+    renderer.setCacheDirectory(cacheDirectory(options));
     renderer.setScene(document.scene);
     if (environment) renderer.setEnvironment(*environment, resolveBakeSettings(options), cacheDirectory(options));
 

@@ -32,6 +32,7 @@ int runRender(const RenderArgs& args)
     auto context = platform::Context::createHeadless();
     gl::DebugMonitor debug;
     render::Renderer renderer;
+    renderer.setCacheDirectory(cacheDirectory(args.frame));
     renderer.setScene(document.scene);
     if (environment) renderer.setEnvironment(*environment, bake, cacheDirectory(args.frame));
     renderer.render(view, settings);

@@ -40,6 +40,7 @@ std::vector<render::PlacedLight> currentLights(const render::LightBuffer& buffer
 Viewer::Viewer(platform::Context& context, const cli::FrameOptions& options)
     : mContext(context), mOptions(options), mRenderer(std::make_unique<render::Renderer>()), mShaderWatcher(gl::shaderRoot())
 {
+    mRenderer->setCacheDirectory(cli::cacheDirectory(mOptions));
 }
 
 Viewer::~Viewer() = default;
@@ -186,6 +187,7 @@ bool Viewer::reloadShaders()
     const int errorsBefore = mDebug ? mDebug->errorCount() : 0;
     try {
         auto fresh = std::make_unique<render::Renderer>();
+        fresh->setCacheDirectory(cli::cacheDirectory(mOptions));
         fresh->setScene(mDocument.scene);
         fresh->lights().setAll(currentLights(mRenderer->lights()));
         // Every material's edits, from the records the old renderer draws with: the default

@@ -118,6 +118,7 @@ FrameSettings effectiveSettings(const FrameSettings& requested)
 
 struct Renderer::Impl {
     gl::State state;
+    std::filesystem::path cacheDirectory; // of the bakes (Renderer::setCacheDirectory)
     gl::UniformBuffer<shared::FrameData> frame{"frame"};
     LightBuffer lights;
     std::unique_ptr<GpuScene> scene;
@@ -518,7 +519,7 @@ void Renderer::setScene(const scene::Scene& scene)
 BakeReport Renderer::setEnvironment(const EnvironmentMap& map, const BakeSettings& settings, const std::filesystem::path& cacheDirectory)
 {
     mImpl->state.reset();
-    mImpl->ibl.setLutCacheDirectory(cacheDirectory);
+    setCacheDirectory(cacheDirectory);
     return mImpl->ibl.setEnvironment(map, settings, cacheDirectory);
 }
 
@@ -526,6 +527,13 @@ void Renderer::clearEnvironment()
 {
     mImpl->state.reset();
     mImpl->ibl = ImageBasedLighting();
+    mImpl->ibl.setLutCacheDirectory(mImpl->cacheDirectory);
+}
+
+void Renderer::setCacheDirectory(const std::filesystem::path& directory)
+{
+    mImpl->cacheDirectory = directory;
+    mImpl->ibl.setLutCacheDirectory(directory);
 }
 
 const Sh9* Renderer::environmentSh() const

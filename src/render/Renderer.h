@@ -130,6 +130,10 @@ public:
     BakeReport setEnvironment(const EnvironmentMap& map, const BakeSettings& settings = {},
                               const std::filesystem::path& cacheDirectory = {});
     void clearEnvironment();
+    /// Where baked tables are cached on disk (empty: nowhere). The DFG tables read there are
+    /// needed with or without an environment (energy compensation), so this outlives
+    /// clearEnvironment; setEnvironment's `cacheDirectory` replaces it.
+    void setCacheDirectory(const std::filesystem::path& directory);
     /// The spherical-harmonics radiance of the current environment (for tests and tools).
     const Sh9* environmentSh() const;
 

@@ -44,6 +44,21 @@ TEST(CliEnvironment, SecondRunReadsTheBakeCache)
     EXPECT_NE(third.err.find("baking environment"), std::string::npos) << third.err;
 }
 
+// Without an environment the DFG table is still needed (energy compensation under punctual
+// lights), and cached like the others.
+TEST(CliEnvironment, DfgTableIsCachedWithoutAnEnvironment)
+{
+    const std::string dir = tempDir("dfgcache");
+    const std::string env = "SPECULA_CACHE_DIR=" + dir + "/cache ";
+    const std::string command = "render learnopengl --width 64 --height 48 -o " + dir + "/out.png";
+    const auto first = runCli("--help >/dev/null; " + env + std::string(SPECULA_CLI_PATH) + " " + command);
+    ASSERT_EQ(first.exitCode, 0) << first.err;
+    EXPECT_NE(first.err.find("baked the DFG table of ggx schlick-ggx schlick"), std::string::npos) << first.err;
+    const auto second = runCli("--help >/dev/null; " + env + std::string(SPECULA_CLI_PATH) + " " + command);
+    ASSERT_EQ(second.exitCode, 0) << second.err;
+    EXPECT_EQ(second.err.find("baked the DFG table"), std::string::npos) << "baked again:\n" << second.err;
+}
+
 TEST(CliEnvironment, BakeCommandPrintsWhatItWrote)
 {
     const std::string dir = tempDir("bakecmd");
