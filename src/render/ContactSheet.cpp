@@ -68,18 +68,23 @@ ImageRGBA8 makeContactSheet(const std::vector<SheetTile>& tiles, int columns)
     sheet.pixels.resize(size_t(sheet.width) * size_t(sheet.height) * 4);
     const uint8_t background[4] = {32, 32, 32, 255}, white[4] = {240, 240, 240, 255};
     fillRect(sheet, 0, 0, sheet.width, sheet.height, background);
+    // One caption size for the whole sheet: full size when every caption fits its tile, else
+    // half size for all (mixed sizes read as emphasis that is not there); cut at the edge.
+    const int captionWidth = cellWidth - kPadding;
+    int scale = kLabelScale;
+    for (const SheetTile& t : tiles) {
+        std::string text = t.label;
+        if (stb_easy_font_width(text.data()) * kLabelScale > captionWidth) scale = 1;
+    }
     for (size_t i = 0; i < tiles.size(); ++i) {
         const int x0 = kPadding + int(i % size_t(columns)) * (cellWidth + kPadding);
         const int y0 = kPadding + int(i / size_t(columns)) * (cellHeight + kLabelHeight + kPadding);
-        // Half size when the caption is wider than its tile, and cut at the tile's edge.
         ImageRGBA8 caption;
-        caption.width = cellWidth - kPadding;
+        caption.width = captionWidth;
         caption.height = kLabelHeight - kPadding;
         caption.pixels.assign(size_t(caption.width) * size_t(caption.height) * 4, 0);
         fillRect(caption, 0, 0, caption.width, caption.height, background);
-        std::string text = tiles[i].label;
-        const int fullWidth = stb_easy_font_width(text.data()) * kLabelScale;
-        drawText(caption, 0, fullWidth <= caption.width ? 0 : 6, text, fullWidth <= caption.width ? kLabelScale : 1, white);
+        drawText(caption, 0, scale == kLabelScale ? 0 : 6, tiles[i].label, scale, white);
         for (int y = 0; y < caption.height; ++y)
             std::memcpy(&sheet.pixels[(size_t(y0 + kPadding + y) * size_t(sheet.width) + size_t(x0 + kPadding)) * 4],
                         &caption.pixels[size_t(y) * size_t(caption.width) * 4], size_t(caption.width) * 4);
