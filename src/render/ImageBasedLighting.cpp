@@ -26,8 +26,13 @@ namespace fs = std::filesystem;
 
 std::string BakeSettings::key() const
 {
-    // v1: bump when a bake shader changes, so stale caches are not reused.
-    return fmt::format("v1-c{}-p{}x{}s{}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples);
+    // The bake shaders, as compiled (includes resolved), are part of the key: editing one makes
+    // a new cache entry rather than reading a stale one. v1: bump when the CPU side of the bake
+    // (the spherical harmonics of EnvironmentMap) or the file layout changes.
+    const uint64_t shaders = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/equirect_to_cube.comp", {}).text +
+                                     gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text);
+    return fmt::format("v1-c{}-p{}x{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples,
+                       uint32_t(shaders ^ (shaders >> 32)));
 }
 
 std::optional<BakeSettings> bakePreset(std::string_view name)

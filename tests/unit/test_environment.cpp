@@ -3,10 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 
 #include <glm/gtc/constants.hpp>
 
+#include "TestFiles.h"
+#include "gl/Program.h"
 #include "render/EnvironmentMap.h"
+#include "render/ImageBasedLighting.h"
 
 using namespace specula::render;
 
@@ -103,4 +109,26 @@ TEST(Environment, ShIrradianceMatchesBruteForceOnRealHdrs)
         std::printf("SH irradiance vs brute force, %s: worst error %.2f%% of the mean irradiance\n", name, 100.0 * worst);
         EXPECT_LT(worst, 0.08) << name;
     }
+}
+
+// The bake cache's key holds the bake shaders as compiled: an edited prefilter (or anything it
+// includes) is a new entry, not a stale read; the same sources give the same key.
+TEST(Environment, BakeKeyFollowsTheBakeShaders)
+{
+    namespace fs = std::filesystem;
+    const specula::render::BakeSettings settings;
+    const std::string original = settings.key();
+    const specula::test::TempDir dir("bake-key");
+    fs::copy(specula::gl::shaderRoot(), dir.path() / "shaders", fs::copy_options::recursive);
+    ::setenv("SPECULA_SHADER_DIR", (dir.path() / "shaders").c_str(), 1);
+    const std::string copied = settings.key();
+    std::ofstream(dir.path() / "shaders/ibl/sampling.glsl", std::ios::app) << "\n// an edit\n";
+    const std::string edited = settings.key();
+    ::unsetenv("SPECULA_SHADER_DIR");
+    EXPECT_EQ(copied, original);
+    EXPECT_NE(edited, original);
+    EXPECT_EQ(settings.key(), original);
+    specula::render::BakeSettings bigger;
+    bigger.cubeSize *= 2;
+    EXPECT_NE(bigger.key(), original); // the parameters too
 }
