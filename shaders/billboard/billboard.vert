@@ -63,7 +63,7 @@ void main()
     vUv = uv;
     vTint = b.tint.rgb;
 #if defined(DOOM_INDEXED)
-    vDoomLevel = doomLevel(b.tint.w * 255.0, length(position - camera));
+    vDoomLevel = doomWallLevel(b.tint.w * 255.0, length(position - camera), 0); // things: the walls' table
 #endif
     gl_Position = frame.projection * (frame.view * (model * vec4(local, 0.0, 1.0)));
 }

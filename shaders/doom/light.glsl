@@ -14,6 +14,24 @@ int doomColormapIndex(float light, float distanceUnits)
     return clamp(startmap - scale / 2, 0, 31);
 }
 
+// r_main.c, R_ExecuteSetViewSize: walls and things take scalelight[light][scale], scale =
+// projection / distance >> LIGHTSCALESHIFT = 2560 / distance (map units, Doom's 320-column
+// view), at most MAXLIGHTSCALE - 1 = 47; level = startmap - scale / DISTMAP. `contrast` is
+// r_segs.c's fake contrast: -1 for a wall along the map's x axis, +1 along its y axis.
+int doomWallColormapIndex(float light, float distanceUnits, int contrast)
+{
+    int lightNumber = clamp((clamp(int(light + 0.5), 0, 255) >> 4) + contrast, 0, 15);
+    int startmap = ((16 - 1 - lightNumber) * 2) * 32 / 16;
+    int scale = min(int(2560.0 / max(distanceUnits, 1.0)), 47);
+    return clamp(startmap - scale / 2, 0, 31);
+}
+
+// The level of a wall or a thing `distanceMetres` from the viewer in a sector of light `light`.
+uint doomWallLevel(float light, float distanceMetres, int contrast)
+{
+    return uint(doomWallColormapIndex(light, distanceMetres * kDoomUnitsPerMetre, contrast));
+}
+
 // The level of a surface `distanceMetres` from the viewer in a sector of light level `light` (0..255).
 uint doomLevel(float light, float distanceMetres)
 {

@@ -8,11 +8,23 @@
 #include "../doom/light.glsl"
 #include "../doom/palette.glsl"
 
-// This fragment's palette index and colour-map level.
+// This fragment's palette index and colour-map level. Doom had walls (vertical) and flats
+// (horizontal), lit by two tables: a vertical surface (its normal within 1e-3 of horizontal) is
+// lit as a wall, with the fake contrast of walls along the map's axes (x and z here); anything
+// else as a flat.
 uvec2 doomIndexLevel(vec3 baseColor)
 {
     float light = material.emissive.w * 255.0; // the sector light level, 0..255
-    return uvec2(doomPaletteIndex(baseColor), doomLevel(light, length(frame.cameraPosition.xyz - vWorldPosition)));
+    float distance = length(frame.cameraPosition.xyz - vWorldPosition);
+    vec3 n = normalize(vNormal);
+    uint level;
+    if (abs(n.y) < 1e-3) {
+        int contrast = abs(n.x) < 1e-3 ? -1 : abs(n.z) < 1e-3 ? 1 : 0;
+        level = doomWallLevel(light, distance, contrast);
+    } else {
+        level = doomLevel(light, distance);
+    }
+    return uvec2(doomPaletteIndex(baseColor), level);
 }
 
 // A Doom material in an otherwise normal frame: the colour-map pass's lookup done here, as the

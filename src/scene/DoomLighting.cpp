@@ -54,4 +54,15 @@ int colormapIndex(int light, double distance)
     return std::clamp(level, 0, kColormaps - 1);
 }
 
+int wallColormapIndex(int light, double distance, WallContrast contrast)
+{
+    constexpr int kLightLevels = 16, kMaxLightScale = 48;
+    const int lightNumber = std::clamp((std::clamp(light, 0, 255) >> 4) + int(contrast), 0, kLightLevels - 1);
+    const int startmap = ((kLightLevels - 1 - lightNumber) * 2) * kColormaps / kLightLevels;
+    // rw_scale = projection / distance, projection = 160 map units (SCREENWIDTH / 2) in 16.16
+    // fixed point, >> LIGHTSCALESHIFT (12): 160 · 16 / distance.
+    const int scale = std::min(int(2560.0 / std::max(distance, 1.0)), kMaxLightScale - 1);
+    return std::clamp(startmap - scale / 2, 0, kColormaps - 1); // DISTMAP = 2
+}
+
 } // namespace specula::scene::doom

@@ -162,7 +162,10 @@ TEST_F(GlTest, DoomFrameAndInlineDoomMaterialsMatchTheCpuTwin)
 
     std::set<int> levels;
     for (const Patch& p : patches()) {
-        const int level = doom::colormapIndex(p.light, kDistance * 32.0);
+        // The middle row faces the eye with a horizontal normal: lit as walls (no fake contrast:
+        // none is along an axis); the others as flats. At this distance both tables agree.
+        const bool wall = std::abs(p.centre.y) < 1e-6f;
+        const int level = wall ? doom::wallColormapIndex(p.light, kDistance * 32.0) : doom::colormapIndex(p.light, kDistance * 32.0);
         levels.insert(level);
         const doom::Rgb expected = tables.palette[tables.shade(p.color, level)];
         // The centre and the corners of the square's inner half.
@@ -228,13 +231,73 @@ TEST_F(GlTest, DoomFrameQuantisesBillboardsLitByTheirSector)
     renderer.render(view, settings);
     const ImageRGBA8 frame = renderer.readImage();
     for (int i = 0; i < 3; ++i) {
-        const int level = doom::colormapIndex(lights[i], kDistance * 32.0);
+        // Things are lit by the walls' scale table (R_ProjectSprite's spritelights).
+        const int level = doom::wallColormapIndex(lights[i], kDistance * 32.0);
         const doom::Rgb expected = tables.palette[tables.shade(texel, level)];
         const doom::Rgb got = pixel(frame, project(view, s.billboards[size_t(i)].billboards[0].position));
         EXPECT_EQ(got, expected) << "light " << lights[i] << ", level " << level << ": got (" << int(got[0]) << ", "
                                  << int(got[1]) << ", " << int(got[2]) << ")";
     }
     expectOnlyPaletteColours(frame, "sprites");
+}
+
+// Walls and flats: a flat, a wall along each map axis (fake contrast) and a diagonal wall, all
+// 100 map units from the eye and all of light 160, take levels 9, 12, 4 and 8 (hand-computed in
+// DoomLighting.WallsAndThingsTakeTheScaleTable): four colours of the same grey.
+TEST_F(GlTest, DoomWallsTakeTheScaleTableAndFakeContrast)
+{
+    const doom::ColorTables& tables = doom::colorTables();
+    const float d = 100.0f / 32.0f; // metres
+    struct Square {
+        glm::vec3 centre, normal, right;
+        int level;
+    };
+    // Each square faces the eye side of its normal: a flat below the eye seen from above, walls
+    // in front and to the side.
+    const glm::vec3 diagonal = glm::normalize(glm::vec3(1, 0, 1));
+    const Square squares[] = {
+        {glm::normalize(glm::vec3(0.0f, -0.4f, -1.0f)) * d, {0, 1, 0}, {1, 0, 0}, 9},         // flat
+        {glm::normalize(glm::vec3(0.25f, 0.0f, -1.0f)) * d, {0, 0, 1}, {1, 0, 0}, 12},         // wall along x
+        {glm::normalize(glm::vec3(-0.45f, 0.0f, -1.0f)) * d, {1, 0, 0}, {0, 0, -1}, 4},        // wall along z (map y)
+        {glm::normalize(glm::vec3(-0.1f, 0.5f, -1.0f)) * d, diagonal, {diagonal.z, 0, -diagonal.x}, 8}, // diagonal wall
+    };
+    const doom::Rgb grey{150, 150, 150};
+    scene::Scene s;
+    for (const Square& q : squares) {
+        scene::Material m;
+        m.baseColorFactor = glm::vec4(glm::vec3(render::srgbToLinear(150.0f / 255.0f)), 1.0f);
+        m.sectorLight = 160;
+        const glm::vec3 up = glm::cross(q.normal, q.right);
+        scene::Primitive quad;
+        for (const glm::vec2& c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+            scene::Vertex v;
+            // 8 cm across: every point within 1.3 units of 100, inside both tables' steps there
+            // (flats 96–112, walls 98.5–102.4).
+            v.position = q.centre + (q.right * c.x + up * c.y) * 0.04f;
+            v.normal = q.normal;
+            quad.vertices.push_back(v);
+            quad.bounds.extend(v.position);
+        }
+        quad.indices = {0, 1, 2, 0, 2, 3};
+        m.doubleSided = true;
+        scene::addShape(s, quad, m, glm::mat4(1.0f), "square");
+    }
+    render::Renderer renderer;
+    renderer.setScene(s);
+    render::FrameSettings settings = plainSettings();
+    settings.materialOverride.model = scene::ShadingModel::Doom;
+    const render::View view = testView();
+    renderer.render(view, settings);
+    const ImageRGBA8 frame = renderer.readImage();
+    std::set<doom::Rgb> colours;
+    for (const Square& q : squares) {
+        const doom::Rgb expected = tables.palette[tables.shade(grey, q.level)];
+        const doom::Rgb got = pixel(frame, project(view, q.centre));
+        EXPECT_EQ(got, expected) << "level " << q.level << ": got (" << int(got[0]) << ", " << int(got[1]) << ", "
+                                 << int(got[2]) << ")";
+        colours.insert(got);
+    }
+    EXPECT_EQ(colours.size(), 4u); // the four levels are four colours: the test can tell them apart
 }
 
 // Every pixel of a Doom frame is a palette colour: the demo level (textured walls, floors,

@@ -44,3 +44,25 @@ TEST(DoomLighting, LightDiminishesWithDistance)
     for (int light = 0; light <= 255; light += 15)
         for (double d = 0.0; d < 2000.0; d += 50.0) EXPECT_LE(colormapIndex(light, d), colormapIndex(light, d + 50.0));
 }
+
+TEST(DoomLighting, WallsAndThingsTakeTheScaleTable)
+{
+    // Light 160: startmap = (15 − 10) · 4 = 20. At 100 units, scale = 2560 / 100 = 25.6 → 25,
+    // level 20 − 12 = 8 (a flat at the same distance: z = 6, 160 / 7 = 22, level 20 − 11 = 9).
+    EXPECT_EQ(wallColormapIndex(160, 100.0), 8);
+    EXPECT_EQ(colormapIndex(160, 100.0), 9);
+    // Fake contrast: along x one light level darker (startmap 24, level 12), along y brighter
+    // (startmap 16, level 4).
+    EXPECT_EQ(wallColormapIndex(160, 100.0, WallContrast::AlongX), 12);
+    EXPECT_EQ(wallColormapIndex(160, 100.0, WallContrast::AlongY), 4);
+    // Near: the scale stops at 47 (level startmap − 23); far: the sector's own level.
+    EXPECT_EQ(wallColormapIndex(160, 10.0), 0); // 20 − 23, clamped
+    EXPECT_EQ(wallColormapIndex(96, 10.0), 13); // startmap 36 − 23
+    EXPECT_EQ(wallColormapIndex(96, 1.0), 13);  // closer changes nothing
+    EXPECT_EQ(wallColormapIndex(160, 1e6), 20);
+    // The contrast stays within the 16 light levels.
+    EXPECT_EQ(wallColormapIndex(255, 1e6, WallContrast::AlongY), 0);
+    EXPECT_EQ(wallColormapIndex(0, 1e6, WallContrast::AlongX), 31);
+    for (int light = 0; light <= 255; light += 15)
+        for (double d = 1.0; d < 2000.0; d += 25.0) EXPECT_LE(wallColormapIndex(light, d), wallColormapIndex(light, d + 25.0));
+}
