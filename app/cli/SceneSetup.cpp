@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/Error.h"
+#include "core/Log.h"
 #include "scene/DemoScenes.h"
 #include "scene/DoomLevel.h"
 
@@ -119,6 +120,18 @@ render::FrameSettings resolveSettings(const scene::SceneDocument& document, cons
     }
     if (document.scene.name == "learnopengl") s.ambient = glm::vec3(0.03f);
     resolvePostSettings(document, options.post, s);
+    if (s.materialOverride.model == scene::ShadingModel::Doom) {
+        // Doom's 8-bit frame holds palette colours only (render::Renderer leaves out whatever
+        // would blend or curve them): say so when they were asked for, rather than drop them quietly.
+        std::string ignored;
+        auto add = [&](bool asked, const char* what) { if (asked) ignored += (ignored.empty() ? "" : ", ") + std::string(what); };
+        add(options.msaa && *options.msaa > 1, "MSAA");
+        add(s.bloom.enabled, "bloom");
+        add(s.fxaa.enabled, "FXAA");
+        add(s.autoExposure.enabled, "automatic exposure");
+        add(options.tonemap.has_value() || options.exposure.has_value(), "exposure and tone mapping");
+        if (!ignored.empty()) log::warn("a Doom frame is palette colours only: {} left out", ignored);
+    }
     return s;
 }
 

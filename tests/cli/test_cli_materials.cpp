@@ -65,4 +65,10 @@ TEST(CliMaterials, DoomLevelIsADoomFrameByDefault)
     const auto pbr = runCli("render doom -o " + dir + "/pbr.png --width 96 --height 64 --shading pbr");
     ASSERT_EQ(pbr.exitCode, 0) << pbr.err;
     EXPECT_GT(offPalette(specula::readPng(dir + "/pbr.png")), 96u * 64u / 4); // lit by the lamps, tone-mapped
+    EXPECT_EQ(r.err.find("left out"), std::string::npos) << r.err; // nothing asked for, nothing to say
+    // What a Doom frame cannot have is left out, and said: the frame stays palette-only.
+    const auto bloom = runCli("render doom -o " + dir + "/bloom.png --width 96 --height 64 --bloom on --msaa 4");
+    ASSERT_EQ(bloom.exitCode, 0) << bloom.err;
+    EXPECT_NE(bloom.err.find("a Doom frame is palette colours only: MSAA, bloom left out"), std::string::npos) << bloom.err;
+    EXPECT_EQ(offPalette(specula::readPng(dir + "/bloom.png")), 0u);
 }
