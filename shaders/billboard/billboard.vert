@@ -63,7 +63,8 @@ void main()
     vUv = uv;
     vTint = b.tint.rgb;
 #if defined(DOOM_INDEXED)
-    vDoomLevel = doomWallLevel(b.tint.w * 255.0, length(position - camera), 0); // things: the walls' table
+    // Things: the walls' table at their depth (r_things.c, R_ProjectSprite: xscale = projection / tz).
+    vDoomLevel = doomWallLevel(b.tint.w * 255.0, -(frame.view * vec4(position, 1.0)).z, 0);
 #endif
     gl_Position = frame.projection * (frame.view * (model * vec4(local, 0.0, 1.0)));
 }

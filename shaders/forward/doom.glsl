@@ -11,11 +11,13 @@
 // This fragment's palette index and colour-map level. Doom had walls (vertical) and flats
 // (horizontal), lit by two tables: a vertical surface (its normal within 1e-3 of horizontal) is
 // lit as a wall, with the fake contrast of walls along the map's axes (x and z here); anything
-// else as a flat.
+// else as a flat. Distance is Doom's: the depth along the view direction (r_plane.c's
+// planeheight · yslope, r_segs.c's rw_scale), so equal light runs in straight bands across the
+// screen, not in circles around the viewer.
 uvec2 doomIndexLevel(vec3 baseColor)
 {
     float light = material.emissive.w * 255.0; // the sector light level, 0..255
-    float distance = length(frame.cameraPosition.xyz - vWorldPosition);
+    float distance = -(frame.view * vec4(vWorldPosition, 1.0)).z;
     vec3 n = normalize(vNormal);
     uint level;
     if (abs(n.y) < 1e-3) {

@@ -24,9 +24,9 @@ namespace doom = specula::scene::doom;
 namespace {
 
 constexpr int kSize = 320;
-// Every test surface lies 4.6 m (147.2 map units) from the eye, and no pixel of it farther
-// than 4.614 m: all in light diminishing's step 9 (144 to 160 units), far from its edges, so
-// the level of every pixel is exactly colormapIndex(light, 147.2).
+// Every test surface lies in the plane 4.6 m (147.2 map units) in front of the eye: every pixel
+// at that depth (Doom's distance), in light diminishing's step 9 (144 to 160 units) and the
+// walls' scale 17 (142.2 to 150.6), so the level of every pixel is exactly known.
 constexpr float kDistance = 4.6f;
 constexpr float kHalfSide = 0.25f;
 
@@ -75,8 +75,8 @@ std::vector<Patch> patches()
             if (i == 0) c = {0, 0, 0};
             if (i == 1) c = {255, 255, 255};
             if (i >= 2 && i < 6) c = palette[size_t(37 * i)];
-            const glm::vec3 direction = glm::normalize(glm::vec3((float(column) - 2.5f) * 0.16f, (float(row) - 2.0f) * 0.16f, -1.0f));
-            out.push_back({c, lights[size_t(i) % std::size(lights)], direction * kDistance});
+            const glm::vec3 centre((float(column) - 2.5f) * 0.16f * kDistance, (float(row) - 2.0f) * 0.16f * kDistance, -kDistance);
+            out.push_back({c, lights[size_t(i) % std::size(lights)], centre});
         }
     }
     return out;
@@ -91,9 +91,10 @@ scene::Scene patchScene(bool doomMaterials)
                                       render::srgbToLinear(p.color[2] / 255.0f), 1.0f);
         m.sectorLight = p.light;
         if (doomMaterials) m.shading.model = scene::ShadingModel::Doom;
-        // A square facing the eye at the origin, centred on p.centre.
+        // A square in the plane, centred on p.centre, its normal towards the eye (the middle
+        // row's is horizontal: lit as a wall; the others' as flats).
         const glm::vec3 look = -glm::normalize(p.centre);
-        const glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0, 1, 0), look)), up = glm::cross(look, right);
+        const glm::vec3 right(1, 0, 0), up(0, 1, 0);
         scene::Primitive quad;
         const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
         for (const glm::vec2& c : corners) {
@@ -162,15 +163,14 @@ TEST_F(GlTest, DoomFrameAndInlineDoomMaterialsMatchTheCpuTwin)
 
     std::set<int> levels;
     for (const Patch& p : patches()) {
-        // The middle row faces the eye with a horizontal normal: lit as walls (no fake contrast:
-        // none is along an axis); the others as flats. At this distance both tables agree.
+        // The middle row's normals are horizontal: lit as walls (no fake contrast: none is along
+        // an axis); the others as flats. At this depth both tables agree.
         const bool wall = std::abs(p.centre.y) < 1e-6f;
         const int level = wall ? doom::wallColormapIndex(p.light, kDistance * 32.0) : doom::colormapIndex(p.light, kDistance * 32.0);
         levels.insert(level);
         const doom::Rgb expected = tables.palette[tables.shade(p.color, level)];
         // The centre and the corners of the square's inner half.
-        const glm::vec3 look = -glm::normalize(p.centre);
-        const glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0, 1, 0), look)), up = glm::cross(look, right);
+        const glm::vec3 right(1, 0, 0), up(0, 1, 0);
         for (const glm::vec2 c :
              {glm::vec2(0, 0), glm::vec2(-0.5f, -0.5f), glm::vec2(0.5f, -0.5f), glm::vec2(0.5f, 0.5f), glm::vec2(-0.5f, 0.5f)}) {
             const glm::ivec2 at = project(view, p.centre + (right * c.x + up * c.y) * kHalfSide);
@@ -220,7 +220,7 @@ TEST_F(GlTest, DoomFrameQuantisesBillboardsLitByTheirSector)
         group.sectorLight = lights[i];
         // The third is blended: an 8-bit frame cuts it out, its opaque texels stay.
         group.alphaMode = i == 2 ? scene::AlphaMode::Blend : scene::AlphaMode::Mask;
-        group.billboards.push_back({glm::normalize(glm::vec3(float(i - 1) * 0.3f, 0.0f, -1.0f)) * kDistance});
+        group.billboards.push_back({glm::vec3(float(i - 1) * 0.3f * kDistance, 0.0f, -kDistance)});
         s.billboards.push_back(group);
     }
     render::Renderer renderer;
@@ -242,7 +242,7 @@ TEST_F(GlTest, DoomFrameQuantisesBillboardsLitByTheirSector)
 }
 
 // Walls and flats: a flat, a wall along each map axis (fake contrast) and a diagonal wall, all
-// 100 map units from the eye and all of light 160, take levels 9, 12, 4 and 8 (hand-computed in
+// 100 map units in front of the eye and all of light 160, take levels 9, 12, 4 and 8 (hand-computed in
 // DoomLighting.WallsAndThingsTakeTheScaleTable): four colours of the same grey.
 TEST_F(GlTest, DoomWallsTakeTheScaleTableAndFakeContrast)
 {
@@ -256,10 +256,10 @@ TEST_F(GlTest, DoomWallsTakeTheScaleTableAndFakeContrast)
     // in front and to the side.
     const glm::vec3 diagonal = glm::normalize(glm::vec3(1, 0, 1));
     const Square squares[] = {
-        {glm::normalize(glm::vec3(0.0f, -0.4f, -1.0f)) * d, {0, 1, 0}, {1, 0, 0}, 9},         // flat
-        {glm::normalize(glm::vec3(0.25f, 0.0f, -1.0f)) * d, {0, 0, 1}, {1, 0, 0}, 12},         // wall along x
-        {glm::normalize(glm::vec3(-0.45f, 0.0f, -1.0f)) * d, {1, 0, 0}, {0, 0, -1}, 4},        // wall along z (map y)
-        {glm::normalize(glm::vec3(-0.1f, 0.5f, -1.0f)) * d, diagonal, {diagonal.z, 0, -diagonal.x}, 8}, // diagonal wall
+        {glm::vec3(0.0f, -0.4f, -1.0f) * d, {0, 1, 0}, {1, 0, 0}, 9},                  // flat
+        {glm::vec3(0.25f, 0.0f, -1.0f) * d, {0, 0, 1}, {1, 0, 0}, 12},                 // wall along x
+        {glm::vec3(-0.45f, 0.0f, -1.0f) * d, {1, 0, 0}, {0, 0, -1}, 4},                // wall along z (map y)
+        {glm::vec3(-0.1f, 0.5f, -1.0f) * d, diagonal, {diagonal.z, 0, -diagonal.x}, 8}, // diagonal wall
     };
     const doom::Rgb grey{150, 150, 150};
     scene::Scene s;
@@ -271,8 +271,8 @@ TEST_F(GlTest, DoomWallsTakeTheScaleTableAndFakeContrast)
         scene::Primitive quad;
         for (const glm::vec2& c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
             scene::Vertex v;
-            // 8 cm across: every point within 1.3 units of 100, inside both tables' steps there
-            // (flats 96–112, walls 98.5–102.4).
+            // 8 cm across: every point's depth within 1.3 units of 100, inside both tables'
+            // steps there (flats 96–112, walls 98.5–102.4).
             v.position = q.centre + (q.right * c.x + up * c.y) * 0.04f;
             v.normal = q.normal;
             quad.vertices.push_back(v);
