@@ -54,6 +54,11 @@ std::vector<Golden> goldens()
          "the post-processing chain; automatic exposure adapts from a histogram, so a level's "
          "rounding anywhere can move the whole frame a little more than a plain render"},
         {"demo-blinn-phong", "demo --shading blinn-phong" + size, 0.5, 0.002, "a classic shading model on the same scene"},
+        {"DamagedHelmet-normals", kAssets + "/models/DamagedHelmet/DamagedHelmet.glb --debug-view normal" + size, 0.5, 0.002,
+         "world-space normals after normal mapping: tangents, handedness and the normal texture"},
+        {"doom-pbr", "doom --shading pbr" + size, 0.5, 0.002,
+         "the Doom level lit by its lamps' point lights with the physically based model: textures "
+         "without filtering, cutout sprites, no environment"},
         {"doom", "doom" + size, 1.0, 0.01,
          "Doom's 8-bit frame: a colour that rounds differently picks a neighbouring palette entry, "
          "a jump of several levels, so more outliers are allowed than for smooth images"},
