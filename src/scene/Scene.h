@@ -81,7 +81,7 @@ struct Material {
     /// Index of refraction of the dielectric part (KHR_materials_ior): F0 = ((ior − 1)/(ior + 1))²
     /// in place of 0.04 (ior 1.5). Unset: 0.04 exactly.
     std::optional<float> ior;
-    /// Phong and Blinn-Phong exponent; 0 = from roughness, 2/α² − 2 (Walter et al. 2007, eq. 26).
+    /// Phong and Blinn-Phong exponent; 0 = from roughness, 2/α² − 2 (Walter et al. 2007, eq. 30).
     float shininess = 0.0f;
     /// Doom model: the sector's light level, 0–255 (scene/DoomLighting.h). The default, 192,
     /// is a lit room's: full bright up close, darker with distance (255 never darkens).
