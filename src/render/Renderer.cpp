@@ -124,7 +124,11 @@ struct Renderer::Impl {
     std::unique_ptr<GpuScene> scene;
     BillboardPass billboards;
 
-    std::map<std::string, ForwardProgram> forwardPrograms;
+    std::map<std::string, ForwardProgram> forwardPrograms; // node-based: pointers stay valid
+    /// This frame's program and DFG table (null when it reads none) of each material, resolved
+    /// once a frame by prepareMaterials so a draw does not build define lists.
+    std::vector<ForwardProgram*> materialPrograms;
+    std::vector<const gl::Texture*> materialDfg;
     std::map<int, gl::Program> tonemapPrograms; ///< by MSAA sample count (1 = no resolve), auto exposure, encoding
     ImageBasedLighting ibl;
     gl::UniformBuffer<shared::EnvironmentData> environment{"environment"};
@@ -260,14 +264,18 @@ struct Renderer::Impl {
         return table;
     }
 
-    /// Compiles the forward program of every material for these settings and bakes the DFG
-    /// tables they read, so that no compile or bake lands inside the forward pass (or its timing).
+    /// Resolves (compiling on first use) the forward program of every material for these
+    /// settings and bakes the DFG tables they read, so that no compile or bake lands inside the
+    /// forward pass (or its timing) and a draw only indexes materialPrograms.
     void prepareMaterials(const FrameSettings& settings)
     {
+        materialPrograms.clear();
+        materialDfg.clear();
         if (!scene) return;
         for (const MaterialBinding& m : scene->materials()) {
-            const ForwardProgram& p = forwardProgram(settings, m.features);
-            if (p.readsDfg) dfgTable(p.shading);
+            ForwardProgram& p = forwardProgram(settings, m.features);
+            materialPrograms.push_back(&p);
+            materialDfg.push_back(p.readsDfg ? &dfgTable(p.shading) : nullptr);
         }
     }
 
@@ -453,10 +461,10 @@ struct Renderer::Impl {
         auto draw = [&](const DrawItem& item, bool blend) {
             const GpuPrimitive& p = scene->primitives()[size_t(item.primitive)];
             const MaterialBinding& m = scene->materials()[size_t(p.material)];
-            ForwardProgram& program = forwardProgram(settings, m.features);
-            if (program.readsDfg) {
+            ForwardProgram& program = *materialPrograms[size_t(p.material)];
+            if (const gl::Texture* dfg = materialDfg[size_t(p.material)]) {
                 // Each draw reads the table of its own variant (docs/ibl.md).
-                state.bindTexture(SPECULA_UNIT_DFG, dfgTable(program.shading));
+                state.bindTexture(SPECULA_UNIT_DFG, *dfg);
                 state.bindSampler(SPECULA_UNIT_DFG, nullptr);
             }
             state.useProgram(program.program);
