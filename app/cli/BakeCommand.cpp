@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "core/Error.h"
 #include "gl/Debug.h"
+#include "gl/State.h"
 #include "platform/Context.h"
 #include "render/ImageBasedLighting.h"
 
@@ -16,11 +17,12 @@ int runBake(const BakeArgs& args)
     const std::filesystem::path directory = args.cacheDirectory.empty() ? render::defaultCacheDirectory() : std::filesystem::path(args.cacheDirectory);
     auto context = platform::Context::createHeadless();
     gl::DebugMonitor debug;
+    gl::State state;
     render::ImageBasedLighting ibl;
     ibl.setLutCacheDirectory(directory);
-    const render::BakeReport report = ibl.setEnvironment(map, *preset, directory);
+    const render::BakeReport report = ibl.setEnvironment(state, map, *preset, directory);
     // The glTF BRDF's table; other BRDF variants' tables are baked (and cached) on first use.
-    ibl.dfg(render::ResolvedShading{});
+    ibl.dfg(state, render::ResolvedShading{});
     if (debug.errorCount() > 0) throw Error("OpenGL reported {} error(s); first: {}", debug.errorCount(), debug.errors().front());
     std::printf("%s %s (%s, %.0f ms)\n", report.fromCache ? "already cached:" : "wrote", report.cacheFile.string().c_str(),
                 preset->name.c_str(), report.milliseconds);

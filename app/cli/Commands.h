@@ -10,6 +10,7 @@ struct RenderArgs {
     std::string output = "out.png";
     FrameOptions frame;
     bool stats = false; ///< print the GPU time of each pass (median of kStatsFrames more frames)
+    std::string printGraph; ///< write the frame's graph of passes as Graphviz dot here ("-": stdout)
 };
 
 constexpr int kStatsFrames = 9;

@@ -1,5 +1,7 @@
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "Commands.h"
 #include "PassTable.h"
@@ -35,6 +37,16 @@ int runRender(const RenderArgs& args)
     renderer.setCacheDirectory(cacheDirectory(args.frame));
     renderer.setScene(document.scene);
     if (environment) renderer.setEnvironment(*environment, bake, cacheDirectory(args.frame));
+    if (!args.printGraph.empty()) {
+        const std::string dot = renderer.frameGraphDot(view, settings);
+        if (args.printGraph == "-") {
+            std::fwrite(dot.data(), 1, dot.size(), stdout);
+        } else {
+            std::ofstream out(args.printGraph, std::ios::binary);
+            out << dot;
+            if (!out) throw Error("cannot write the frame graph to {}", args.printGraph);
+        }
+    }
     renderer.render(view, settings);
     const ImageRGBA8 image = renderer.readImage(); // waits for the GPU: the frame is done
     const double firstFrameMs = msSinceProcessStart();

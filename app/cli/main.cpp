@@ -59,6 +59,8 @@ int main(int argc, char** argv)
     renderCommand->add_option("scene", render.scene, "a .gltf, .glb or .json scene, or a built-in: demo (default), learnopengl, learnopengl-ibl");
     renderCommand->add_option("-o,--output", render.output, "output image: .png (tone-mapped sRGB), .hdr or .exr (linear radiance x 2^EV)");
     addFrameOptions(renderCommand, render.frame);
+    renderCommand->add_option("--print-graph", render.printGraph,
+                              "write the frame's graph of passes and resources as Graphviz dot to FILE (- = standard output)");
     renderCommand->add_flag("--stats", render.stats,
                             "print the GPU time of each pass (median of 9 more frames, timer queries) to stdout");
 

@@ -122,7 +122,7 @@ int runView(const ViewArgs& args)
 
         viewer.renderFrame(delta);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-        viewer.renderer().state().reset(); // ImGui's backend changed GL state behind the cache
+        viewer.renderer().invalidateGlState(); // ImGui's backend changed GL state behind the cache
         viewer.captureWindow();
         context->swapBuffers();
         ++frameCount;

@@ -135,7 +135,7 @@ void Viewer::renderFrame(float deltaSeconds)
         if (lastError != e.what()) log::warn("frame not rendered: {}", e.what());
         lastError = e.what();
         if (mDebug) mDebug->discardAfter(errorsBefore);
-        mRenderer->state().reset();
+        mRenderer->invalidateGlState();
     }
     mRenderer->present(size.x, size.y);
     if (mFirstFrame) {
@@ -162,7 +162,7 @@ void Viewer::captureWindow()
     image.width = size.x;
     image.height = size.y;
     const std::vector<uint8_t> pixels = gl::readDefaultFramebuffer(size.x, size.y);
-    mRenderer->state().reset(); // the read binding changed behind the cache
+    mRenderer->invalidateGlState(); // the read binding changed behind the cache
     // GL's first row is the bottom one; files want the top one first. The window has no alpha.
     const size_t row = size_t(size.x) * 4;
     image.pixels.resize(pixels.size());
@@ -211,7 +211,7 @@ bool Viewer::reloadShaders()
         log::warn("shader reload failed, keeping the last good programs: {}", lastError);
         // The driver reports a compile error as a GL error too; any other is a bug and stays.
         if (mDebug && dynamic_cast<const gl::ShaderError*>(&e)) mDebug->discardAfter(errorsBefore);
-        mRenderer->state().reset();
+        mRenderer->invalidateGlState();
         return false;
     }
 }

@@ -105,6 +105,11 @@ void Framebuffer::blitColorTo(const Framebuffer& target, int width, int height) 
     glBlitNamedFramebuffer(id(), target.id(), 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
+void Framebuffer::blitColorToDefault(int width, int height, int targetWidth, int targetHeight) const
+{
+    glBlitNamedFramebuffer(id(), 0, 0, 0, width, height, 0, 0, targetWidth, targetHeight, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+}
+
 std::vector<uint8_t> readDefaultFramebuffer(int width, int height)
 {
     std::vector<uint8_t> pixels(size_t(std::max(width, 0)) * size_t(std::max(height, 0)) * 4);

@@ -33,6 +33,9 @@ public:
     void clearDepth(float depth = 1.0f);
     /// Copies colour attachment 0 into `target`'s (resolving multisampling), nearest filter.
     void blitColorTo(const Framebuffer& target, int width, int height) const;
+    /// Copies colour attachment 0 (width × height) into the default framebuffer's rectangle
+    /// (0, 0, targetWidth, targetHeight), scaled with linear filtering (a window's present).
+    void blitColorToDefault(int width, int height, int targetWidth, int targetHeight) const;
 
     uint32_t id() const { return mHandle.get(); }
 

@@ -55,4 +55,18 @@ DeviceInfo queryDeviceInfo()
     return info;
 }
 
+int maxColorSamples()
+{
+    GLint samples = 0;
+    glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &samples);
+    return samples;
+}
+
+int maxDepthSamples()
+{
+    GLint samples = 0;
+    glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &samples);
+    return samples;
+}
+
 } // namespace specula::gl

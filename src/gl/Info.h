@@ -20,4 +20,8 @@ struct DeviceInfo {
 /// Queries the current context.
 DeviceInfo queryDeviceInfo();
 
+/// GL_MAX_COLOR_TEXTURE_SAMPLES and GL_MAX_DEPTH_TEXTURE_SAMPLES of the current context.
+int maxColorSamples();
+int maxDepthSamples();
+
 } // namespace specula::gl

@@ -32,6 +32,19 @@ void State::reset()
     glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
 }
 
+void State::forgetTexture(uint32_t name)
+{
+    for (uint32_t& t : mTextures)
+        if (t == name) t = ~0u;
+    for (ImageBinding& i : mImages)
+        if (i.texture == name) i = {};
+}
+
+void State::forgetFramebuffer(uint32_t name)
+{
+    if (mFramebuffer == name) mFramebuffer = ~0u;
+}
+
 void State::drawTriangles(uint32_t count, bool indexed)
 {
     if (indexed) {
@@ -48,15 +61,15 @@ void State::drawTrianglesInstanced(uint32_t count, uint32_t instances)
     ++mDrawCalls;
 }
 
-void State::bindImage(int unit, const Texture& texture, int level, ImageAccess access)
+void State::bindImage(int unit, const Texture& texture, int level, ImageAccess access, bool layered)
 {
-    const ImageBinding binding{texture.id(), level, access};
+    const ImageBinding binding{texture.id(), level, access, layered};
     if (mImages[size_t(unit)] == binding) return;
     mImages[size_t(unit)] = binding;
     const GLenum glAccess = access == ImageAccess::ReadOnly    ? GL_READ_ONLY
                           : access == ImageAccess::WriteOnly ? GL_WRITE_ONLY
                                                              : GL_READ_WRITE;
-    glBindImageTexture(GLuint(unit), texture.id(), level, GL_FALSE, 0, glAccess, internalFormat(texture.desc().format));
+    glBindImageTexture(GLuint(unit), texture.id(), level, layered ? GL_TRUE : GL_FALSE, 0, glAccess, internalFormat(texture.desc().format));
 }
 
 void State::dispatchCompute(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ)
@@ -74,6 +87,7 @@ void State::memoryBarrier(Barrier barriers)
     if (b & uint32_t(Barrier::TextureUpdate)) bits |= GL_TEXTURE_UPDATE_BARRIER_BIT;
     if (b & uint32_t(Barrier::BufferUpdate)) bits |= GL_BUFFER_UPDATE_BARRIER_BIT;
     if (b & uint32_t(Barrier::Framebuffer)) bits |= GL_FRAMEBUFFER_BARRIER_BIT;
+    if (b & uint32_t(Barrier::Uniform)) bits |= GL_UNIFORM_BARRIER_BIT;
     glMemoryBarrier(bits);
 }
 

@@ -29,6 +29,7 @@ enum class Barrier : uint32_t {
     TextureUpdate = 1u << 3, ///< glGetTextureImage and texture uploads
     BufferUpdate = 1u << 4,  ///< buffer reads back and updates
     Framebuffer = 1u << 5,   ///< rendering to or blitting from the texture
+    Uniform = 1u << 6,       ///< uniform-buffer reads of a buffer written by a shader
 };
 constexpr Barrier operator|(Barrier a, Barrier b) { return Barrier(uint32_t(a) | uint32_t(b)); }
 
@@ -57,11 +58,17 @@ public:
     void viewport(int x, int y, int width, int height);
     void apply(const PipelineDesc& pipeline);
 
-    /// Forgets the cache and restores GL defaults this class relies on.
+    /// Forgets the cache and restores GL defaults this class relies on (after third-party GL
+    /// code, or when every object it may remember is replaced at once).
     void reset();
+    /// Forgets one object about to be deleted, wherever the cache remembers it bound: GL reuses
+    /// the names of deleted objects, and a new object must not pass for the old one.
+    void forgetTexture(uint32_t name);
+    void forgetFramebuffer(uint32_t name);
 
-    /// Binds one level of a texture to an image unit for compute shaders, in its own format.
-    void bindImage(int unit, const Texture& texture, int level, ImageAccess access);
+    /// Binds one level of a texture to an image unit for compute shaders, in its own format;
+    /// `layered`: every face or layer of it (image2DArray / imageCube).
+    void bindImage(int unit, const Texture& texture, int level, ImageAccess access, bool layered = false);
     /// Runs the bound compute program over groups × local size invocations.
     void dispatchCompute(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ = 1);
     static void memoryBarrier(Barrier barriers);
@@ -88,6 +95,7 @@ private:
         uint32_t texture = ~0u;
         int level = -1;
         ImageAccess access = ImageAccess::ReadOnly;
+        bool layered = false;
         bool operator==(const ImageBinding&) const = default;
     };
     std::array<ImageBinding, kImageUnits> mImages{};

@@ -19,7 +19,9 @@
 #include "gl/Debug.h"
 #include "gl/Program.h"
 #include "gl/ShaderSource.h"
+#include "gl/State.h"
 #include "gl/Texture.h"
+#include "render/VariantKey.h"
 
 namespace specula::render {
 namespace fs = std::filesystem;
@@ -185,7 +187,7 @@ struct ImageBasedLighting::Impl {
         return p;
     }
 
-    void bake(const EnvironmentMap& map, const BakeSettings& s)
+    void bake(gl::State& state, const EnvironmentMap& map, const BakeSettings& s)
     {
         gl::DebugGroup group("bake environment");
         // Source: RGBA32F so values above the half-float range (a real sun) survive until the cube.
@@ -212,11 +214,12 @@ struct ImageBasedLighting::Impl {
         cubeDesc.levels = 0;
         cubeDesc.label = "environment cube";
         cube = gl::Texture(cubeDesc);
-        glUseProgram(program(toCube, "ibl/equirect_to_cube.comp").id());
-        glBindTextureUnit(0, source.id());
-        glBindImageTexture(0, cube.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glDispatchCompute(GLuint(groups(s.cubeSize)), GLuint(groups(s.cubeSize)), 6);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+        state.useProgram(program(toCube, "ibl/equirect_to_cube.comp"));
+        state.bindTexture(0, source);
+        state.bindSampler(0, nullptr); // the source's own repeat wrap (set above)
+        state.bindImage(0, cube, 0, gl::ImageAccess::WriteOnly, /*layered*/ true);
+        state.dispatchCompute(uint32_t(groups(s.cubeSize)), uint32_t(groups(s.cubeSize)), 6);
+        state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
         cube.generateMipmaps();
 
         gl::TextureDesc prefilteredDesc = cubeDesc;
@@ -225,27 +228,26 @@ struct ImageBasedLighting::Impl {
         prefilteredDesc.label = "prefiltered environment";
         prefiltered = gl::Texture(prefilteredDesc);
         gl::Program& p = program(prefilter, "ibl/prefilter.comp");
-        glUseProgram(p.id());
-        glBindTextureUnit(0, cube.id());
+        state.useProgram(p);
+        state.bindTexture(0, cube);
+        state.bindSampler(0, nullptr);
         p.set(p.uniformLocation("uSamples"), uint32_t(s.prefilterSamples));
         p.set(p.uniformLocation("uSourceSize"), float(s.cubeSize));
         p.set(p.uniformLocation("uSourceLevels"), float(cube.levels()));
         const int roughness = p.uniformLocation("uPerceptualRoughness");
         for (int level = 0; level < s.prefilterLevels; ++level) {
             p.set(roughness, float(level) / float(std::max(s.prefilterLevels - 1, 1)));
-            glBindImageTexture(0, prefiltered.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+            state.bindImage(0, prefiltered, level, gl::ImageAccess::WriteOnly, /*layered*/ true);
             const int size = prefiltered.width(level);
-            glDispatchCompute(GLuint(groups(size)), GLuint(groups(size)), 6);
+            state.dispatchCompute(uint32_t(groups(size)), uint32_t(groups(size)), 6);
             log::debug("prefiltered level {}/{} ({}²)", level + 1, s.prefilterLevels, size);
         }
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glUseProgram(0);
+        state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
         sh = projectSh9(map);
     }
 
     /// Returns the milliseconds spent compiling the program (the rest of a bake is the dispatch).
-    double bakeLut(gl::Texture& lut, const std::vector<std::string>& defines, const std::string& label)
+    double bakeLut(gl::State& state, gl::Texture& lut, const std::vector<std::string>& defines, const std::string& label)
     {
         gl::DebugGroup group("bake " + label);
         gl::TextureDesc desc;
@@ -256,13 +258,11 @@ struct ImageBasedLighting::Impl {
         Stopwatch compile;
         gl::Program p({.compute = "ibl/dfg.comp", .defines = defines, .label = label});
         const double compileMs = compile.elapsedMs();
-        glUseProgram(p.id());
+        state.useProgram(p);
         p.set(p.uniformLocation("uSamples"), uint32_t(lutSettings.lutSamples));
-        glBindImageTexture(0, lut.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-        glDispatchCompute(GLuint(groups(lutSettings.lutSize)), GLuint(groups(lutSettings.lutSize)), 1);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-        glUseProgram(0);
+        state.bindImage(0, lut, 0, gl::ImageAccess::WriteOnly);
+        state.dispatchCompute(uint32_t(groups(lutSettings.lutSize)), uint32_t(groups(lutSettings.lutSize)), 1);
+        state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
         return compileMs;
     }
 };
@@ -278,7 +278,7 @@ const gl::Texture& ImageBasedLighting::cube() const { return mImpl->cube; }
 const gl::Texture& ImageBasedLighting::prefiltered() const { return mImpl->prefiltered; }
 void ImageBasedLighting::setLutCacheDirectory(const fs::path& directory) { mImpl->lutCacheDirectory = directory; }
 
-BakeReport ImageBasedLighting::setEnvironment(const EnvironmentMap& map, const BakeSettings& settings, const fs::path& cacheDirectory)
+BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const EnvironmentMap& map, const BakeSettings& settings, const fs::path& cacheDirectory)
 {
     Impl& r = *mImpl;
     Stopwatch watch;
@@ -301,7 +301,7 @@ BakeReport ImageBasedLighting::setEnvironment(const EnvironmentMap& map, const B
     }
     log::info("baking environment ({}x{}, preset {}: cube {}², prefilter {}² x {} levels, {} samples)", map.width, map.height,
               settings.name, settings.cubeSize, settings.prefilterSize, settings.prefilterLevels, settings.prefilterSamples);
-    r.bake(map, settings);
+    r.bake(state, map, settings);
     r.has = true;
     if (!report.cacheFile.empty()) {
         writeAtomically(report.cacheFile, [&](std::ofstream& out) {
@@ -323,15 +323,14 @@ bool ImageBasedLighting::hasDfg(const ResolvedShading& shading) const
     return it != mImpl->luts.end() && it->second;
 }
 
-const gl::Texture& ImageBasedLighting::dfg(const ResolvedShading& shading)
+const gl::Texture& ImageBasedLighting::dfg(gl::State& state, const ResolvedShading& shading)
 {
     Impl& r = *mImpl;
     const ResolvedShading variant = dfgVariant(shading);
     gl::Texture& lut = r.luts[dfgKey(variant)];
     if (lut) return lut;
-    // The defines are the forward pass's for this D, G and F (one source, render/ShadingVariant).
-    std::vector<std::string> defines;
-    appendShadingDefines(variant, defines);
+    // The defines are the forward pass's for this D, G and F (one table, render/VariantKey).
+    const std::vector<std::string> defines = ForwardVariant::make(0, variant, DebugView::None, false, false, false, false).defines();
     const std::string name = dfgName(variant);
     const std::string label = "dfg " + name;
     fs::path file;
@@ -348,7 +347,7 @@ const gl::Texture& ImageBasedLighting::dfg(const ResolvedShading& shading)
             return lut;
     }
     Stopwatch watch;
-    const double compileMs = r.bakeLut(lut, defines, label);
+    const double compileMs = r.bakeLut(state, lut, defines, label);
     glFinish(); // the time of the bake, not of its submission
     const double bakeMs = watch.elapsedMs();
     if (!file.empty()) writeAtomically(file, [&](std::ofstream& out) { writeTextures(out, lut); });

@@ -14,8 +14,9 @@
 #include "render/ShadingVariant.h"
 
 namespace specula::gl {
+class State;
 class Texture;
-}
+} // namespace specula::gl
 
 namespace specula::render {
 
@@ -59,7 +60,7 @@ public:
 
     /// Makes the GPU resources for `map`: from the cache when `cacheDirectory` holds them,
     /// else by baking (and then writing the cache, if a directory is given).
-    BakeReport setEnvironment(const EnvironmentMap& map, const BakeSettings& settings,
+    BakeReport setEnvironment(gl::State& state, const EnvironmentMap& map, const BakeSettings& settings,
                               const std::filesystem::path& cacheDirectory = {});
 
     bool hasEnvironment() const;
@@ -71,9 +72,8 @@ public:
     /// cached on disk (setLutCacheDirectory) under a name that holds the variant, the table
     /// size and samples, and a hash of the compiled source. Kept until the table parameters
     /// of setEnvironment's settings change.
-    const gl::Texture& dfg(const ResolvedShading& shading);
-    /// Whether dfg(shading) is ready. A bake runs compute programs behind the back of a
-    /// gl::State cache: its owner resets it after one.
+    const gl::Texture& dfg(gl::State& state, const ResolvedShading& shading);
+    /// Whether dfg(shading) is ready.
     bool hasDfg(const ResolvedShading& shading) const;
     void setLutCacheDirectory(const std::filesystem::path& directory);
 

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -15,10 +16,6 @@
 #include "render/Tonemap.h"
 #include "render/View.h"
 #include "scene/Scene.h"
-
-namespace specula::gl {
-class State;
-}
 
 namespace specula::render {
 
@@ -96,7 +93,7 @@ struct FrameSettings {
 /// (materialOverride doom) runs "forward" (palette indices) and "colour map" instead of the
 /// passes between them and "debug view".
 struct PassTiming {
-    const char* name;
+    const char* name; ///< valid for the renderer's lifetime
     double gpuMs;
     /// With setPassWallClock: milliseconds from before the pass was issued until the GPU
     /// finished it (glFinish on both sides), else 0. On a software renderer this is the pass's
@@ -159,9 +156,16 @@ public:
     /// after it (PassTiming::wallMs). Serialises the frame: for measurements only.
     void setPassWallClock(bool enabled);
     const FrameStats& stats() const;
-    gl::State& state();
+    /// Tells the renderer that GL state changed behind its back (third-party GL code such as a
+    /// UI's backend, or a read of the default framebuffer): it forgets what it thought bound.
+    void invalidateGlState();
 
-    /// Compiles the programs `settings` needs now rather than on first use.
+    /// The frame `settings` would run, as a graph of passes and resources in Graphviz dot
+    /// (`specula render --print-graph`). Compiles its programs; renders nothing.
+    std::string frameGraphDot(const View& view, const FrameSettings& settings);
+
+    /// Builds and compiles the frame `settings` ask for without running it: its programs are
+    /// compiled and its tables baked now rather than on first use.
     void prepare(const FrameSettings& settings);
 
     // The material registry: the scene's materials by index, the glTF default material last.

@@ -58,42 +58,4 @@ ResolvedShading resolveShading(const scene::MaterialShading& frame, scene::BrdfG
     return r;
 }
 
-void appendShadingDefines(const ResolvedShading& s, std::vector<std::string>& defines)
-{
-    using scene::ShadingModel;
-    switch (s.model) {
-    case ShadingModel::Pbr: break;
-    case ShadingModel::Unlit: defines.push_back("SHADING_UNLIT"); return; // no BRDF: one variant
-    case ShadingModel::Flat: defines.push_back("SHADING_FLAT"); return;
-    case ShadingModel::Gouraud: defines.push_back("SHADING_GOURAUD"); return;
-    case ShadingModel::Phong: defines.push_back("SHADING_PHONG"); return;
-    case ShadingModel::BlinnPhong: defines.push_back("SHADING_BLINN_PHONG"); return;
-    case ShadingModel::Doom: defines.push_back("SHADING_DOOM"); return;
-    }
-    switch (s.distribution) {
-    case scene::BrdfDistribution::GGX: break;
-    case scene::BrdfDistribution::Beckmann: defines.push_back("BRDF_D_BECKMANN"); break;
-    case scene::BrdfDistribution::BlinnPhong: defines.push_back("BRDF_D_BLINN_PHONG"); break;
-    }
-    switch (s.geometry) {
-    case scene::BrdfGeometry::SmithGGX: break;
-    case scene::BrdfGeometry::SchlickGGX: defines.push_back("BRDF_G_SCHLICK_GGX"); break;
-    case scene::BrdfGeometry::SmithGGXCorrelated: defines.push_back("BRDF_G_SMITH_GGX_CORRELATED"); break;
-    case scene::BrdfGeometry::Neumann: defines.push_back("BRDF_G_NEUMANN"); break;
-    case scene::BrdfGeometry::Kelemen: defines.push_back("BRDF_G_KELEMEN"); break;
-    case scene::BrdfGeometry::CookTorrance: defines.push_back("BRDF_G_COOK_TORRANCE"); break;
-    case scene::BrdfGeometry::Implicit: defines.push_back("BRDF_G_IMPLICIT"); break;
-    }
-    switch (s.fresnel) {
-    case scene::BrdfFresnel::Schlick: break;
-    case scene::BrdfFresnel::SchlickSG: defines.push_back("BRDF_F_SCHLICK_SG"); break;
-    case scene::BrdfFresnel::None: defines.push_back("BRDF_F_NONE"); break;
-    }
-    switch (s.diffuse) {
-    case scene::BrdfDiffuse::Lambert: break;
-    case scene::BrdfDiffuse::OrenNayar: defines.push_back("BRDF_DIFFUSE_OREN_NAYAR"); break;
-    case scene::BrdfDiffuse::Burley: defines.push_back("BRDF_DIFFUSE_BURLEY"); break;
-    }
-}
-
 } // namespace specula::render

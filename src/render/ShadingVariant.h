@@ -1,10 +1,8 @@
 #pragma once
 // A material's shading (scene::MaterialShading) as part of the forward pass's variant key:
 // packed into the high bits of MaterialBinding::features, resolved against the frame's
-// settings, and turned into the defines of shaders/forward/ and shaders/brdf/brdf.glsl.
+// settings; render/VariantKey turns it into the defines of shaders/forward/ and shaders/brdf/.
 #include <cstdint>
-#include <string>
-#include <vector>
 
 #include "scene/MaterialModel.h"
 
@@ -30,8 +28,5 @@ scene::MaterialShading unpackShading(uint32_t features);
 /// the glTF BRDF.
 ResolvedShading resolveShading(const scene::MaterialShading& frameOverride, scene::BrdfGeometry defaultGeometry,
                                uint32_t features);
-
-/// SHADING_* and BRDF_* defines; none for the default (the glTF BRDF, physically based).
-void appendShadingDefines(const ResolvedShading& shading, std::vector<std::string>& defines);
 
 } // namespace specula::render

@@ -13,7 +13,7 @@
 
 #include "gl/Program.h"
 #include "render/Billboard.h"
-#include "render/BillboardPass.h"
+#include "render/passes/BillboardPass.h"
 #include "render/LightBuffer.h"
 #include "render/Renderer.h"
 #include "scene/DemoScenes.h"

@@ -9,7 +9,7 @@
 
 #include "gl/State.h"
 #include "gl/Texture.h"
-#include "render/BloomPass.h"
+#include "render/passes/BloomPass.h"
 #include "render/Renderer.h"
 #include "scene/Procedural.h"
 

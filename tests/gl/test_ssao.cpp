@@ -8,7 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/Renderer.h"
-#include "render/SsaoPass.h"
+#include "render/passes/SsaoPass.h"
 #include "scene/Procedural.h"
 
 using namespace specula;

@@ -10,7 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/Billboard.h"
-#include "render/BillboardPass.h"
+#include "render/passes/BillboardPass.h"
 
 using namespace specula;
 using scene::BillboardKind;

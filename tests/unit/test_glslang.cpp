@@ -11,9 +11,12 @@
 
 #include "gl/Program.h"
 #include "gl/ShaderSource.h"
+#include "render/VariantKey.h"
 
 namespace fs = std::filesystem;
 using specula::gl::loadShaderSource;
+using specula::render::forwardVariantTable;
+using specula::render::VariantDefine;
 
 namespace {
 
@@ -31,22 +34,17 @@ std::vector<Variant> variants()
         if (ext == ".vert" || ext == ".frag" || ext == ".comp")
             out.push_back({fs::relative(entry.path(), specula::gl::shaderRoot()).generic_string(), {}});
     }
-    // The forward pass's feature variants, one at a time and all together.
-    const std::vector<std::string> features = {"HAS_BASE_COLOR_TEXTURE", "HAS_METALLIC_ROUGHNESS_TEXTURE", "HAS_NORMAL_TEXTURE",
-                                               "HAS_OCCLUSION_TEXTURE",  "HAS_EMISSIVE_TEXTURE",           "DOUBLE_SIDED",
-                                               "ALPHA_MASK",             "ALPHA_BLEND",                    "VERTEX_COLOR",
-                                               "IBL",                    "ENERGY_COMPENSATION",            "BRDF_G_SCHLICK_GGX",
-                                               "SSAO"};
-    for (const auto& feature : features) out.push_back({"forward/pbr.frag", {feature}});
-    out.push_back({"forward/pbr.frag", features});
-    // The material system: every BRDF term, shading model and debug view (docs/materials.md).
-    for (const char* define : {"BRDF_D_BECKMANN", "BRDF_D_BLINN_PHONG", "BRDF_G_SMITH_GGX_CORRELATED", "BRDF_G_NEUMANN",
-                               "BRDF_G_KELEMEN", "BRDF_G_COOK_TORRANCE", "BRDF_G_IMPLICIT", "BRDF_F_SCHLICK_SG", "BRDF_F_NONE",
-                               "BRDF_DIFFUSE_OREN_NAYAR", "BRDF_DIFFUSE_BURLEY", "SHADING_UNLIT", "SHADING_FLAT", "SHADING_GOURAUD",
-                               "SHADING_PHONG", "SHADING_BLINN_PHONG", "SHADING_DOOM", "DEBUG_VIEW_BASE_COLOR", "DEBUG_VIEW_NORMAL",
-                               "DEBUG_VIEW_ROUGHNESS", "DEBUG_VIEW_METALLIC", "DEBUG_VIEW_OCCLUSION", "DEBUG_VIEW_EMISSIVE",
-                               "DEBUG_VIEW_BRDF_D", "DEBUG_VIEW_BRDF_G", "DEBUG_VIEW_BRDF_F"})
-        out.push_back({"forward/pbr.frag", {define, "IBL", "HAS_OCCLUSION_TEXTURE"}});
+    // The forward pass's variants from its variant key's table (render/VariantKey): every row
+    // alone, every row with image-based light and an occlusion texture, and every flag (the
+    // rows that combine freely) together.
+    std::vector<std::string> flags;
+    for (const VariantDefine& row : forwardVariantTable()) {
+        out.push_back({"forward/pbr.frag", {row.define}});
+        out.push_back({"forward/pbr.frag", {row.define, "IBL", "HAS_OCCLUSION_TEXTURE"}});
+        if (row.kind == VariantDefine::Kind::MaterialFeature || row.kind == VariantDefine::Kind::FrameFeature)
+            flags.push_back(row.define);
+    }
+    out.push_back({"forward/pbr.frag", flags});
     out.push_back({"forward/pbr.vert", {"SHADING_GOURAUD"}});
     // A Doom frame (render/DoomPass): the forward pass's and the billboards' indexed output.
     out.push_back({"forward/pbr.frag", {"SHADING_DOOM", "DOOM_INDEXED"}});

@@ -1,4 +1,4 @@
-#include "render/BillboardPass.h"
+#include "render/passes/BillboardPass.h"
 
 #include <algorithm>
 #include <array>

@@ -3,6 +3,8 @@
 // complement to it (it also smooths edges MSAA cannot see: alpha-tested and shading aliasing).
 #include <memory>
 
+#include "render/graph/FrameGraph.h"
+
 namespace specula::gl {
 class Framebuffer;
 class State;
@@ -11,6 +13,8 @@ class Texture;
 
 namespace specula::render {
 
+class GlGraphBackend;
+
 class FxaaPass {
 public:
     FxaaPass();
@@ -18,6 +22,8 @@ public:
     FxaaPass(const FxaaPass&) = delete;
     FxaaPass& operator=(const FxaaPass&) = delete;
 
+    /// Adds "fxaa": `input` anti-aliased into `target`, as apply().
+    void addTo(FrameGraph& graph, GlGraphBackend& backend, GraphTexture input, GraphTexture target);
     /// Anti-aliases `input` (the tone-mapped frame, sRGB-encoded values in an RGBA8 UNORM
     /// texture) into `target` (an sRGB texture, written without encoding again) at the same size.
     void apply(gl::State& state, const gl::Texture& input, const gl::Framebuffer& target);

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "render/PostSettings.h"
+#include "render/graph/FrameGraph.h"
 
 namespace specula::gl {
 class State;
@@ -12,6 +13,8 @@ class Texture;
 } // namespace specula::gl
 
 namespace specula::render {
+
+class GlGraphBackend;
 
 /// What the auto-exposure pass last decided (read back from the GPU).
 struct ExposureReading {
@@ -28,7 +31,10 @@ public:
     ExposurePass(const ExposurePass&) = delete;
     ExposurePass& operator=(const ExposurePass&) = delete;
 
-    /// Measures `hdr` (single-sampled, before exposure) and adapts the exposure state.
+    /// Adds "exposure": measures `hdr` (single-sampled, before exposure) and adapts the exposure
+    /// state, which it returns for the tone mapper to read (bind()).
+    GraphBuffer addTo(FrameGraph& graph, GlGraphBackend& backend, GraphTexture hdr, const AutoExposureSettings& settings);
+    /// The same at once, outside a graph (the caller places barriers before reading the state).
     void apply(gl::State& state, const gl::Texture& hdr, const AutoExposureSettings& settings);
     /// Binds the exposure state for the tone mapper (SPECULA_BINDING_EXPOSURE).
     void bind() const;

@@ -1,4 +1,4 @@
-#include "render/BloomPass.h"
+#include "render/passes/BloomPass.h"
 
 #include <algorithm>
 #include <map>
@@ -10,6 +10,7 @@
 #include "gl/Program.h"
 #include "gl/State.h"
 #include "gl/Texture.h"
+#include "render/graph/GlGraphBackend.h"
 #include "shaders/shared/Bindings.h"
 
 namespace specula::render {
@@ -43,8 +44,6 @@ struct BloomPass::Impl {
     gl::Sampler linearClamp{{.mipFilter = gl::MipFilter::None, .wrapS = gl::Wrap::ClampToEdge,
                              .wrapT = gl::Wrap::ClampToEdge, .wrapR = gl::Wrap::ClampToEdge},
                             "bloom bilinear clamp"};
-    std::vector<gl::Texture> levels; ///< levels[k] is level k + 1 (level 0 is the frame)
-    int width = 0, height = 0;
 
     DownsampleProgram& downsampleProgram(bool first, bool karis)
     {
@@ -77,27 +76,26 @@ struct BloomPass::Impl {
         return upsample;
     }
 
-    void ensureLevels(gl::State& state, int w, int h)
-    {
-        if (w == width && h == height) return;
-        width = w;
-        height = h;
-        levels.clear();
-        // Names of deleted textures may be reused: the binding cache must forget them.
-        state.reset();
-        for (int k = 1; k <= levelsFor(w, h, kMaxLevels); ++k) {
-            gl::TextureDesc desc;
-            // Rounded up, so that level k + 1 covers all of level k.
-            desc.width = std::max(1, (w + (1 << k) - 1) >> k);
-            desc.height = std::max(1, (h + (1 << k) - 1) >> k);
-            // Half floats: the glow of a 65504 pixel must not become Inf, and an 11-bit float's
-            // 6-bit mantissa would cost the 1% energy accuracy.
-            desc.format = gl::Format::RGBA16F;
-            desc.label = "bloom level " + std::to_string(k);
-            levels.emplace_back(desc);
-        }
-    }
+    /// Adds the glow of `hdr` to it; levels[k] is level k + 1 (level 0 is the frame).
+    void run(gl::State& state, gl::Texture& hdr, const std::vector<gl::Texture*>& levels, const BloomSettings& settings,
+             float exposure, bool glowOnly);
 };
+
+namespace {
+
+/// Level k's size: rounded up, so that level k + 1 covers all of level k.
+GraphTextureDesc levelDesc(int w, int h, int k)
+{
+    GraphTextureDesc desc;
+    desc.width = std::max(1, (w + (1 << k) - 1) >> k);
+    desc.height = std::max(1, (h + (1 << k) - 1) >> k);
+    // Half floats: the glow of a 65504 pixel must not become Inf, and an 11-bit float's 6-bit
+    // mantissa would cost the 1% energy accuracy.
+    desc.format = gl::Format::RGBA16F;
+    return desc;
+}
+
+} // namespace
 
 BloomPass::BloomPass() : mImpl(std::make_unique<Impl>()) {}
 BloomPass::~BloomPass() = default;
@@ -116,10 +114,49 @@ void BloomPass::prepare(const BloomSettings& settings)
     mImpl->upsampleProgram();
 }
 
-void BloomPass::apply(gl::State& state, gl::Texture& hdr, const BloomSettings& settings, float exposure,
-                      bool glowOnly)
+void BloomPass::addTo(FrameGraph& graph, GlGraphBackend& backend, GraphTexture hdr, const BloomSettings& settings,
+                      float exposure, bool glowOnly)
 {
-    Impl& r = *mImpl;
+    prepare(settings);
+    const GraphTextureDesc& frame = graph.desc(hdr);
+    const int levels = levelsFor(frame.width, frame.height, settings.levels);
+    // Made before the pass: its execute step captures the handles.
+    std::vector<GraphTexture> handles;
+    for (int k = 1; k <= levels; ++k)
+        handles.push_back(graph.createTexture("bloom level " + std::to_string(k), levelDesc(frame.width, frame.height, k)));
+    graph.addPass(
+        "bloom",
+        [&](FrameGraph::Builder& b) {
+            b.write(hdr, Use::ImageReadWrite);
+            // Written first (down-sampled into), then read and written (up-sampled into).
+            for (GraphTexture level : handles) b.write(level, Use::ImageStore);
+        },
+        [this, &backend, hdr, handles, settings, exposure, glowOnly] {
+            std::vector<gl::Texture*> textures;
+            for (GraphTexture h : handles) textures.push_back(&backend.texture(h));
+            mImpl->run(backend.state(), backend.texture(hdr), textures, settings, exposure, glowOnly);
+        });
+}
+
+void BloomPass::apply(gl::State& state, gl::Texture& hdr, const BloomSettings& settings, float exposure, bool glowOnly)
+{
+    // A graph of this one pass, its levels from a pool of its own.
+    GlGraphBackend backend(state);
+    FrameGraph graph;
+    GraphTextureDesc desc;
+    desc.width = hdr.width();
+    desc.height = hdr.height();
+    desc.format = hdr.desc().format;
+    const GraphTexture frame = graph.importTexture("hdr", desc, backend.importTexture(hdr));
+    addTo(graph, backend, frame, settings, exposure, glowOnly);
+    backend.beginFrame(graph);
+    graph.execute(backend);
+}
+
+void BloomPass::Impl::run(gl::State& state, gl::Texture& hdr, const std::vector<gl::Texture*>& levelTextures,
+                          const BloomSettings& settings, float exposure, bool glowOnly)
+{
+    Impl& r = *this;
     const int w = hdr.width(), h = hdr.height();
     const int levels = levelsFor(w, h, settings.levels);
     if (levels == 0) {
@@ -127,15 +164,14 @@ void BloomPass::apply(gl::State& state, gl::Texture& hdr, const BloomSettings& s
         if (glowOnly) hdr.clear();
         return;
     }
-    r.ensureLevels(state, w, h);
 
     // Where the frame ends in level k, in its texels: not a texel edge once a size was odd.
     auto extent = [&](int k) { return glm::vec2(float(w), float(h)) / float(1 << k); };
 
     // Down: frame → level 1 → … → level `levels`.
     for (int k = 1; k <= levels; ++k) {
-        const gl::Texture& source = k == 1 ? hdr : r.levels[size_t(k - 2)];
-        const gl::Texture& target = r.levels[size_t(k - 1)];
+        const gl::Texture& source = k == 1 ? hdr : *levelTextures[size_t(k - 2)];
+        const gl::Texture& target = *levelTextures[size_t(k - 1)];
         DownsampleProgram& p = r.downsampleProgram(k == 1, settings.fireflyFilter);
         state.useProgram(p.program);
         p.program.set(p.targetSize, glm::ivec2(target.width(), target.height()));
@@ -155,8 +191,8 @@ void BloomPass::apply(gl::State& state, gl::Texture& hdr, const BloomSettings& s
     state.useProgram(p.program);
     p.program.set(p.radius, std::max(settings.radius, 0.0f));
     for (int k = levels - 1; k >= 0; --k) {
-        const gl::Texture& lower = r.levels[size_t(k)];
-        const gl::Texture& target = k == 0 ? hdr : r.levels[size_t(k - 1)];
+        const gl::Texture& lower = *levelTextures[size_t(k)];
+        const gl::Texture& target = k == 0 ? hdr : *levelTextures[size_t(k - 1)];
         const bool frame = k == 0;
         p.program.set(p.targetSize, glm::ivec2(target.width(), target.height()));
         p.program.set(p.lowerTexel, glm::vec2(1.0f / float(lower.width()), 1.0f / float(lower.height())));
@@ -168,8 +204,8 @@ void BloomPass::apply(gl::State& state, gl::Texture& hdr, const BloomSettings& s
         state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearClamp);
         state.bindImage(SPECULA_IMAGE_POST_OUTPUT, target, 0, gl::ImageAccess::ReadWrite);
         state.dispatchCompute(groups(target.width()), groups(target.height()));
-        state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::Image | gl::Barrier::TextureUpdate |
-                            gl::Barrier::Framebuffer);
+        // Between dispatches; after the last one the frame graph places what its readers need.
+        if (k > 0) state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::Image);
     }
 }
 

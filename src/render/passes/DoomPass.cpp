@@ -1,4 +1,4 @@
-#include "render/DoomPass.h"
+#include "render/passes/DoomPass.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,9 @@
 #include "gl/Program.h"
 #include "gl/State.h"
 #include "gl/Texture.h"
-#include "gl/VertexArray.h"
+#include "render/FrameContext.h"
 #include "render/Tonemap.h"
+#include "render/graph/GlGraphBackend.h"
 #include "scene/DoomPalette.h"
 #include "shaders/shared/Bindings.h"
 
@@ -19,10 +20,6 @@ namespace doom = scene::doom;
 struct DoomPass::Impl {
     gl::Texture nearest, colormap, palette;
     gl::Program program;
-    gl::VertexArray emptyVertexArray{"doom colour map fullscreen triangle"};
-    int width = 0, height = 0;
-    gl::Texture indexed, depth;
-    gl::Framebuffer framebuffer;
 
     Impl()
     {
@@ -85,56 +82,38 @@ void DoomPass::bindTables(gl::State& state) const
     state.bindSampler(SPECULA_UNIT_DOOM_PALETTE, nullptr);
 }
 
-void DoomPass::beginFrame(gl::State& state, int width, int height, glm::vec3 background)
+uint32_t DoomPass::clearIndex(glm::vec3 background)
 {
-    Impl& p = *mImpl;
-    if (width != p.width || height != p.height || !p.indexed) {
-        // The names of deleted targets may be reused: forget the cached bindings.
-        state.reset();
-        p.width = width;
-        p.height = height;
-        gl::TextureDesc desc;
-        desc.width = width;
-        desc.height = height;
-        desc.format = gl::Format::RG8UI;
-        desc.label = "doom indexed frame";
-        p.indexed = gl::Texture(desc);
-        desc.format = gl::Format::Depth32F;
-        desc.label = "doom depth";
-        p.depth = gl::Texture(desc);
-        p.framebuffer = gl::Framebuffer("doom indexed frame");
-        p.framebuffer.attachColor(0, p.indexed).attachDepth(p.depth).check();
-    }
-    state.bindFramebuffer(&p.framebuffer);
-    state.viewport(0, 0, width, height);
-    // Depth writes must be on for the clear to reach the depth buffer.
-    state.apply({});
     doom::Rgb srgb;
     for (int c = 0; c < 3; ++c)
         srgb[size_t(c)] = uint8_t(std::lround(std::clamp(linearToSrgb(std::max(background[c], 0.0f)), 0.0f, 1.0f) * 255.0f));
-    p.framebuffer.clearColorUint(0, doom::colorTables().lookUp(srgb), 0, 0, 0);
-    p.framebuffer.clearDepth(1.0f);
+    return doom::colorTables().lookUp(srgb);
 }
 
-void DoomPass::resolve(gl::State& state, const gl::Framebuffer& output)
+void DoomPass::addTo(FrameGraph& graph, const FrameContext& frame, GraphTexture indexed, GraphTexture hdr, GraphTexture ldr)
 {
     Impl& p = *mImpl;
     p.ensureProgram();
-    state.bindFramebuffer(&output);
-    state.viewport(0, 0, p.width, p.height);
-    // No sRGB encoding: colour 1 receives the palette's bytes as they are.
-    state.apply({.noDepthTest = true, .noDepthWrite = true});
-    state.useProgram(p.program);
-    bindTables(state);
-    state.bindTexture(SPECULA_UNIT_POST_INPUT, p.indexed);
-    state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
-    state.bindVertexArray(p.emptyVertexArray);
-    state.drawTriangles(3, false);
-}
-
-std::vector<uint8_t> DoomPass::readIndexed() const
-{
-    return mImpl->indexed ? mImpl->indexed.readBytes(0, 2) : std::vector<uint8_t>{};
+    graph.addPass(
+        "colour map",
+        [&](FrameGraph::Builder& b) {
+            b.read(indexed, Use::Sample);
+            b.write(hdr, Use::ColorAttachment);
+            b.write(ldr, Use::ColorAttachment);
+        },
+        [this, &frame, &p, indexed, hdr, ldr] {
+            gl::State& state = frame.state();
+            state.bindFramebuffer(&frame.backend.framebuffer({hdr, ldr}));
+            state.viewport(0, 0, frame.width, frame.height);
+            // No sRGB encoding: colour 1 receives the palette's bytes as they are.
+            state.apply({.noDepthTest = true, .noDepthWrite = true});
+            state.useProgram(p.program);
+            bindTables(state);
+            state.bindTexture(SPECULA_UNIT_POST_INPUT, frame.backend.texture(indexed));
+            state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
+            state.bindVertexArray(frame.stores.emptyVertexArray);
+            state.drawTriangles(3, false);
+        });
 }
 
 } // namespace specula::render

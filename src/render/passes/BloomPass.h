@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "render/PostSettings.h"
+#include "render/graph/FrameGraph.h"
 
 namespace specula::gl {
 class State;
@@ -20,6 +21,8 @@ class Texture;
 
 namespace specula::render {
 
+class GlGraphBackend;
+
 class BloomPass {
 public:
     BloomPass();
@@ -27,10 +30,14 @@ public:
     BloomPass(const BloomPass&) = delete;
     BloomPass& operator=(const BloomPass&) = delete;
 
-    /// Adds the glow of `hdr` (RGBA16F, single-sampled, read and written in place) to it.
-    /// `exposure` is the frame's manual exposure scale (threshold and firefly weights are
-    /// judged on exposed values). With `glowOnly` the frame is replaced by the glow it would
-    /// get (debug view). Does nothing for a 1×1 frame or zero levels.
+    /// Adds "bloom" to `graph`: the glow of `hdr` (RGBA16F, single-sampled, read and written in
+    /// place) added to it, through levels the graph allocates. `exposure` is the frame's manual
+    /// exposure scale (threshold and firefly weights are judged on exposed values). With
+    /// `glowOnly` the frame is replaced by the glow it would get (debug view). Does nothing for
+    /// a 1×1 frame or zero levels.
+    void addTo(FrameGraph& graph, GlGraphBackend& backend, GraphTexture hdr, const BloomSettings& settings, float exposure,
+               bool glowOnly = false);
+    /// The same on a texture of the caller's, at once: a graph of this one pass.
     void apply(gl::State& state, gl::Texture& hdr, const BloomSettings& settings, float exposure,
                bool glowOnly = false);
     /// Compiles the programs now rather than on first use.

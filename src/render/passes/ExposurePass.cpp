@@ -1,4 +1,4 @@
-#include "render/ExposurePass.h"
+#include "render/passes/ExposurePass.h"
 
 #include <algorithm>
 #include <array>
@@ -7,6 +7,7 @@
 #include "gl/Buffer.h"
 #include "gl/Program.h"
 #include "gl/State.h"
+#include "render/graph/GlGraphBackend.h"
 #include "gl/Texture.h"
 #include "gl/UniformBuffer.h"
 #include "shaders/shared/Bindings.h"
@@ -103,8 +104,24 @@ void ExposurePass::apply(gl::State& state, const gl::Texture& hdr, const AutoExp
     state.memoryBarrier(gl::Barrier::StorageBuffer);
     state.useProgram(r.adapt);
     state.dispatchCompute(1, 1);
-    // The tone mapper reads the state next (and the next frame's histogram the cleared bins).
-    state.memoryBarrier(gl::Barrier::StorageBuffer | gl::Barrier::BufferUpdate);
+    // The tone mapper reads the state next, the next frame's histogram the cleared bins: the
+    // frame graph places their barriers.
+}
+
+GraphBuffer ExposurePass::addTo(FrameGraph& graph, GlGraphBackend& backend, GraphTexture hdr, const AutoExposureSettings& settings)
+{
+    prepare();
+    const GraphBuffer state = graph.importBuffer("exposure state", backend.importBuffer(mImpl->exposure));
+    const GraphBuffer bins = graph.importBuffer("luminance histogram", backend.importBuffer(mImpl->bins));
+    graph.addPass(
+        "exposure",
+        [&](FrameGraph::Builder& b) {
+            b.read(hdr, Use::Sample);
+            b.write(bins, Use::StorageWrite);
+            b.write(state, Use::StorageWrite);
+        },
+        [this, &backend, hdr, settings] { apply(backend.state(), backend.texture(hdr), settings); });
+    return state;
 }
 
 } // namespace specula::render

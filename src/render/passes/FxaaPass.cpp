@@ -1,4 +1,4 @@
-#include "render/FxaaPass.h"
+#include "render/passes/FxaaPass.h"
 
 #include <glm/glm.hpp>
 
@@ -7,6 +7,7 @@
 #include "gl/State.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
+#include "render/graph/GlGraphBackend.h"
 #include "shaders/shared/Bindings.h"
 
 namespace specula::render {
@@ -34,6 +35,20 @@ FxaaPass::~FxaaPass() = default;
 void FxaaPass::prepare()
 {
     mImpl->ensureProgram();
+}
+
+void FxaaPass::addTo(FrameGraph& graph, GlGraphBackend& backend, GraphTexture input, GraphTexture target)
+{
+    prepare();
+    graph.addPass(
+        "fxaa",
+        [&](FrameGraph::Builder& b) {
+            b.read(input, Use::Sample);
+            b.write(target, Use::ColorAttachment);
+        },
+        [this, &backend, input, target] {
+            apply(backend.state(), backend.texture(input), backend.framebuffer({target}));
+        });
 }
 
 void FxaaPass::apply(gl::State& state, const gl::Texture& input, const gl::Framebuffer& target)

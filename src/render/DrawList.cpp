@@ -1,0 +1,105 @@
+#include "render/DrawList.h"
+
+#include <algorithm>
+#include <bit>
+
+#include "gl/Program.h"
+#include "gl/State.h"
+#include "render/Frustum.h"
+#include "render/GpuScene.h"
+#include "shaders/shared/Bindings.h"
+#include "shaders/shared/MaterialData.h"
+
+namespace specula::render {
+
+uint32_t DrawList::orderedBits(float value)
+{
+    if (value == 0.0f) value = 0.0f; // -0 and +0 are equal, as the comparison says
+    const uint32_t bits = std::bit_cast<uint32_t>(value);
+    // Negative floats order backwards as integers: flip them all; positive ones: set the sign.
+    return (bits & 0x80000000u) ? ~bits : bits | 0x80000000u;
+}
+
+DrawList DrawList::build(const GpuScene& scene, const glm::mat4& view, const glm::mat4& viewProjection, DrawFilter filter,
+                         const std::vector<DrawProgram>& programs)
+{
+    DrawList list;
+    list.mFilter = filter;
+    const Frustum frustum(viewProjection);
+    for (const DrawItem& item : scene.draws()) {
+        const GpuPrimitive& p = scene.primitives()[size_t(item.primitive)];
+        const bool blended = scene.materials()[size_t(p.material)].alphaMode == scene::AlphaMode::Blend;
+        if (blended != (filter == DrawFilter::Blended)) continue;
+        if (!frustum.intersects(p.bounds.transformed(item.world))) continue;
+        const glm::vec3 center = glm::vec3(item.world * glm::vec4(p.bounds.center(), 1.0f));
+        // View-space z: negative in front of the camera, most negative farthest.
+        const float z = (view * glm::vec4(center, 1.0f)).z;
+        uint64_t key = 0;
+        if (filter == DrawFilter::Blended) {
+            key = orderedBits(z); // back to front
+        } else {
+            const gl::Program* program = programs[size_t(p.material)].program;
+            const uint64_t programBits = program ? program->id() & 0xffffu : 0u;
+            key = programBits << 48 | uint64_t(uint32_t(p.material) & 0xffffu) << 32 | orderedBits(-z); // front to back
+        }
+        list.mCommands.push_back({key, &item, p.material});
+    }
+    std::stable_sort(list.mCommands.begin(), list.mCommands.end(),
+                     [](const DrawCommand& a, const DrawCommand& b) { return a.key < b.key; });
+    return list;
+}
+
+size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vector<DrawProgram>& programs,
+                        const SubmitOptions& options) const
+{
+    size_t triangles = 0;
+    int boundMaterial = -1;
+    const bool blendDraws = mFilter == DrawFilter::Blended && options.blend;
+    for (const DrawCommand& command : mCommands) {
+        const DrawItem& item = *command.item;
+        const GpuPrimitive& p = scene.primitives()[size_t(item.primitive)];
+        const MaterialBinding& m = scene.materials()[size_t(p.material)];
+        const DrawProgram& program = programs[size_t(p.material)];
+        if (program.dfg) {
+            // Each draw reads the table of its own BRDF variant (docs/ibl.md).
+            state.bindTexture(SPECULA_UNIT_DFG, *program.dfg);
+            state.bindSampler(SPECULA_UNIT_DFG, nullptr);
+        }
+        state.useProgram(*program.program);
+        gl::PipelineDesc pipeline;
+        pipeline.cull = m.doubleSided ? gl::CullMode::None : gl::CullMode::Back;
+        pipeline.frontFaceClockwise = item.mirrored;
+        if (blendDraws) {
+            pipeline.blend = gl::BlendMode::Alpha;
+            pipeline.noDepthWrite = true;
+        }
+        state.apply(pipeline);
+        if (options.textures == MaterialTextures::All) {
+            for (size_t slot = 0; slot < size_t(TextureSlot::Count); ++slot) {
+                const gl::Texture* texture = m.textures[slot];
+                if (!texture) texture = slot == size_t(TextureSlot::Normal) ? options.flatNormal : options.white;
+                state.bindTexture(int(slot), *texture);
+                state.bindSampler(int(slot), m.samplers[slot]);
+            }
+        } else if (m.features & SPECULA_MATERIAL_ALPHA_MASK) {
+            const size_t slot = size_t(TextureSlot::BaseColor);
+            if (m.textures[slot]) {
+                state.bindTexture(SPECULA_UNIT_BASE_COLOR, *m.textures[slot]);
+                state.bindSampler(SPECULA_UNIT_BASE_COLOR, m.samplers[slot]);
+            }
+        }
+        program.program->set(program.model, item.world);
+        program.program->set(program.normalMatrix, item.normalMatrix);
+        if (p.material != boundMaterial) {
+            gl::bindUniformBufferRange(SPECULA_BINDING_MATERIAL, scene.materialBuffer(), scene.materialOffset(p.material),
+                                       sizeof(shared::GpuMaterial));
+            boundMaterial = p.material;
+        }
+        state.bindVertexArray(p.vertexArray);
+        state.drawTriangles(p.count, p.indexed);
+        triangles += p.count / 3;
+    }
+    return triangles;
+}
+
+} // namespace specula::render

@@ -1,0 +1,85 @@
+#pragma once
+// One draw list per view and filter, and the one path that submits it (Filament's
+// RenderPass::appendCommands and its sort key): the depth/normal pre-pass, the forward pass and,
+// next, every shadow view draw the scene through here.
+//
+// A list holds the frustum-visible draws of the scene that pass a filter, each with a 64-bit
+// sort key. Opaque and masked draws sort by program, then material (fewer state changes), then
+// front to back (early depth rejection); blended draws back to front by the view depth of their
+// bounds' centre, ties in scene order.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace specula::gl {
+class Program;
+class State;
+class Texture;
+} // namespace specula::gl
+
+namespace specula::render {
+
+class GpuScene;
+struct DrawItem;
+struct GpuPrimitive;
+
+enum class DrawFilter : uint8_t {
+    Opaque,  ///< opaque and alpha-masked surfaces
+    Blended, ///< alpha-blended surfaces
+};
+
+struct DrawCommand {
+    uint64_t key = 0;
+    const DrawItem* item = nullptr;
+    int material = 0;
+};
+
+/// What one material draws with in a pass: its program (and the program's uniform locations)
+/// and, when the program samples one, its DFG table.
+struct DrawProgram {
+    const gl::Program* program = nullptr;
+    int model = -1;
+    int normalMatrix = -1;
+    const gl::Texture* dfg = nullptr;
+};
+
+/// How a pass's draws bind their material.
+enum class MaterialTextures : uint8_t {
+    All,              ///< every texture slot (flat defaults where a material has none)
+    BaseColorIfMasked ///< only a masked material's base colour (a depth pass's alpha test)
+};
+
+struct SubmitOptions {
+    MaterialTextures textures = MaterialTextures::All;
+    /// Blended draws blend (straight alpha) and do not write depth; false: drawn like cutouts
+    /// (a Doom frame's indices cannot blend).
+    bool blend = true;
+    /// Textures bound where a material has none, for MaterialTextures::All.
+    const gl::Texture* white = nullptr;
+    const gl::Texture* flatNormal = nullptr;
+};
+
+class DrawList {
+public:
+    /// The scene's draws visible in `viewProjection` that pass `filter`, sorted.
+    /// `programs[material]` orders opaque draws by program.
+    static DrawList build(const GpuScene& scene, const glm::mat4& view, const glm::mat4& viewProjection, DrawFilter filter,
+                          const std::vector<DrawProgram>& programs);
+
+    /// Draws the list with `programs[material]` into the bound target. Returns triangles.
+    size_t submit(gl::State& state, const GpuScene& scene, const std::vector<DrawProgram>& programs,
+                  const SubmitOptions& options) const;
+
+    const std::vector<DrawCommand>& commands() const { return mCommands; }
+    bool empty() const { return mCommands.empty(); }
+
+    /// An order-preserving map of a float onto unsigned integers (for keys): a < b ⇔ f(a) < f(b).
+    static uint32_t orderedBits(float value);
+
+private:
+    DrawFilter mFilter = DrawFilter::Opaque;
+    std::vector<DrawCommand> mCommands;
+};
+
+} // namespace specula::render

@@ -1,0 +1,133 @@
+#include "render/VariantKey.h"
+
+#include <array>
+
+#include "shaders/shared/MaterialData.h"
+
+namespace specula::render {
+namespace {
+
+// Layout of the key.
+constexpr uint64_t kFeatureMask = 0x1ffu; // SPECULA_MATERIAL_* bits 0–8
+constexpr uint64_t kIbl = 1u << 9;
+constexpr uint64_t kEnergyCompensation = 1u << 10;
+constexpr uint64_t kSsao = 1u << 11;
+constexpr uint64_t kDoomIndexed = 1u << 12;
+constexpr int kDebugShift = 16, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
+              kDiffuseShift = 30;
+constexpr uint64_t field(int shift, int bits) { return ((uint64_t(1) << bits) - 1) << shift; }
+constexpr uint64_t kDebugMask = field(kDebugShift, 4), kModelMask = field(kModelShift, 3),
+                   kDistributionMask = field(kDistributionShift, 2), kGeometryMask = field(kGeometryShift, 3),
+                   kFresnelMask = field(kFresnelShift, 2), kDiffuseMask = field(kDiffuseShift, 2);
+template <typename E>
+constexpr uint64_t at(int shift, E value) { return uint64_t(value) << shift; }
+
+using K = VariantDefine::Kind;
+using scene::BrdfDiffuse, scene::BrdfDistribution, scene::BrdfFresnel, scene::BrdfGeometry, scene::ShadingModel;
+
+constexpr std::array kTable = {
+    VariantDefine{kModelMask, at(kModelShift, ShadingModel::Unlit), "SHADING_UNLIT", K::ShadingModel},
+    VariantDefine{kModelMask, at(kModelShift, ShadingModel::Flat), "SHADING_FLAT", K::ShadingModel},
+    VariantDefine{kModelMask, at(kModelShift, ShadingModel::Gouraud), "SHADING_GOURAUD", K::ShadingModel},
+    VariantDefine{kModelMask, at(kModelShift, ShadingModel::Phong), "SHADING_PHONG", K::ShadingModel},
+    VariantDefine{kModelMask, at(kModelShift, ShadingModel::BlinnPhong), "SHADING_BLINN_PHONG", K::ShadingModel},
+    VariantDefine{kModelMask, at(kModelShift, ShadingModel::Doom), "SHADING_DOOM", K::ShadingModel},
+    VariantDefine{kDistributionMask, at(kDistributionShift, BrdfDistribution::Beckmann), "BRDF_D_BECKMANN", K::Brdf},
+    VariantDefine{kDistributionMask, at(kDistributionShift, BrdfDistribution::BlinnPhong), "BRDF_D_BLINN_PHONG", K::Brdf},
+    VariantDefine{kGeometryMask, at(kGeometryShift, BrdfGeometry::SchlickGGX), "BRDF_G_SCHLICK_GGX", K::Brdf},
+    VariantDefine{kGeometryMask, at(kGeometryShift, BrdfGeometry::SmithGGXCorrelated), "BRDF_G_SMITH_GGX_CORRELATED", K::Brdf},
+    VariantDefine{kGeometryMask, at(kGeometryShift, BrdfGeometry::Neumann), "BRDF_G_NEUMANN", K::Brdf},
+    VariantDefine{kGeometryMask, at(kGeometryShift, BrdfGeometry::Kelemen), "BRDF_G_KELEMEN", K::Brdf},
+    VariantDefine{kGeometryMask, at(kGeometryShift, BrdfGeometry::CookTorrance), "BRDF_G_COOK_TORRANCE", K::Brdf},
+    VariantDefine{kGeometryMask, at(kGeometryShift, BrdfGeometry::Implicit), "BRDF_G_IMPLICIT", K::Brdf},
+    VariantDefine{kFresnelMask, at(kFresnelShift, BrdfFresnel::SchlickSG), "BRDF_F_SCHLICK_SG", K::Brdf},
+    VariantDefine{kFresnelMask, at(kFresnelShift, BrdfFresnel::None), "BRDF_F_NONE", K::Brdf},
+    VariantDefine{kDiffuseMask, at(kDiffuseShift, BrdfDiffuse::OrenNayar), "BRDF_DIFFUSE_OREN_NAYAR", K::Brdf},
+    VariantDefine{kDiffuseMask, at(kDiffuseShift, BrdfDiffuse::Burley), "BRDF_DIFFUSE_BURLEY", K::Brdf},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::BaseColor), "DEBUG_VIEW_BASE_COLOR", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::Normal), "DEBUG_VIEW_NORMAL", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::Roughness), "DEBUG_VIEW_ROUGHNESS", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::Metallic), "DEBUG_VIEW_METALLIC", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::Occlusion), "DEBUG_VIEW_OCCLUSION", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::Emissive), "DEBUG_VIEW_EMISSIVE", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::BrdfD), "DEBUG_VIEW_BRDF_D", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::BrdfG), "DEBUG_VIEW_BRDF_G", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::BrdfF), "DEBUG_VIEW_BRDF_F", K::DebugView},
+    VariantDefine{kIbl, kIbl, "IBL", K::FrameFeature},
+    VariantDefine{kEnergyCompensation, kEnergyCompensation, "ENERGY_COMPENSATION", K::FrameFeature},
+    VariantDefine{kSsao, kSsao, "SSAO", K::FrameFeature},
+    VariantDefine{kDoomIndexed, kDoomIndexed, "DOOM_INDEXED", K::FrameFeature},
+    VariantDefine{SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE, SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE, "HAS_BASE_COLOR_TEXTURE", K::MaterialFeature},
+    VariantDefine{SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE, SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE,
+                  "HAS_METALLIC_ROUGHNESS_TEXTURE", K::MaterialFeature},
+    VariantDefine{SPECULA_MATERIAL_HAS_NORMAL_TEXTURE, SPECULA_MATERIAL_HAS_NORMAL_TEXTURE, "HAS_NORMAL_TEXTURE", K::MaterialFeature},
+    VariantDefine{SPECULA_MATERIAL_HAS_OCCLUSION_TEXTURE, SPECULA_MATERIAL_HAS_OCCLUSION_TEXTURE, "HAS_OCCLUSION_TEXTURE", K::MaterialFeature},
+    VariantDefine{SPECULA_MATERIAL_HAS_EMISSIVE_TEXTURE, SPECULA_MATERIAL_HAS_EMISSIVE_TEXTURE, "HAS_EMISSIVE_TEXTURE", K::MaterialFeature},
+    VariantDefine{SPECULA_MATERIAL_DOUBLE_SIDED, SPECULA_MATERIAL_DOUBLE_SIDED, "DOUBLE_SIDED", K::MaterialFeature},
+    VariantDefine{SPECULA_MATERIAL_ALPHA_MASK, SPECULA_MATERIAL_ALPHA_MASK, "ALPHA_MASK", K::MaterialFeature},
+    VariantDefine{SPECULA_MATERIAL_ALPHA_BLEND, SPECULA_MATERIAL_ALPHA_BLEND, "ALPHA_BLEND", K::MaterialFeature},
+    VariantDefine{SPECULA_MATERIAL_USE_VERTEX_COLOR, SPECULA_MATERIAL_USE_VERTEX_COLOR, "VERTEX_COLOR", K::MaterialFeature},
+};
+static_assert((kFeatureMask & (kIbl | kEnergyCompensation | kSsao | kDoomIndexed | kDebugMask)) == 0);
+
+} // namespace
+
+std::span<const VariantDefine> forwardVariantTable()
+{
+    return kTable;
+}
+
+bool isMaterialDebugView(DebugView view)
+{
+    return view != DebugView::None && view != DebugView::Ssao && view != DebugView::Bloom;
+}
+
+ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& shading, DebugView debugView, bool ibl,
+                                    bool energyCompensation, bool ssao, bool doomIndexed)
+{
+    uint64_t key = features & kFeatureMask;
+    key |= at(kModelShift, shading.model);
+    if (shading.model == ShadingModel::Pbr) {
+        key |= at(kDistributionShift, shading.distribution) | at(kGeometryShift, shading.geometry) |
+               at(kFresnelShift, shading.fresnel) | at(kDiffuseShift, shading.diffuse);
+    }
+    if (isMaterialDebugView(debugView)) key |= at(kDebugShift, debugView);
+    if (ibl) key |= kIbl;
+    if (energyCompensation) key |= kEnergyCompensation;
+    if (ssao) key |= kSsao;
+    if (doomIndexed) key |= kDoomIndexed;
+    return {key};
+}
+
+ResolvedShading ForwardVariant::shading() const
+{
+    ResolvedShading s;
+    s.model = ShadingModel((key & kModelMask) >> kModelShift);
+    s.distribution = BrdfDistribution((key & kDistributionMask) >> kDistributionShift);
+    s.geometry = BrdfGeometry((key & kGeometryMask) >> kGeometryShift);
+    s.fresnel = BrdfFresnel((key & kFresnelMask) >> kFresnelShift);
+    s.diffuse = BrdfDiffuse((key & kDiffuseMask) >> kDiffuseShift);
+    return s;
+}
+
+bool ForwardVariant::debugView() const
+{
+    return (key & kDebugMask) != 0;
+}
+
+std::vector<std::string> ForwardVariant::defines() const
+{
+    std::vector<std::string> out;
+    for (const VariantDefine& row : kTable)
+        if ((key & row.mask) == row.value) out.emplace_back(row.define);
+    return out;
+}
+
+std::string ForwardVariant::name() const
+{
+    std::string out;
+    for (const std::string& d : defines()) out += d + ";";
+    return out;
+}
+
+} // namespace specula::render

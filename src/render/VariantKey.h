@@ -1,0 +1,50 @@
+#pragma once
+// The forward pass's variant key: every compile-time choice of its program as bits and small
+// fields of one integer, and the one table that maps them to the defines of shaders/forward/
+// and shaders/brdf/brdf.glsl. The renderer keys its program cache with it; the glslangValidator
+// test (tests/unit/test_glslang.cpp) walks the same table, so no list of defines is kept by hand.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "render/PostSettings.h"
+#include "render/ShadingVariant.h"
+
+namespace specula::render {
+
+/// One row of the table: the define is set when (key & mask) == value.
+struct VariantDefine {
+    uint64_t mask;
+    uint64_t value;
+    const char* define;
+    /// The row's group: flags combine freely; rows of one field exclude each other.
+    enum class Kind : uint8_t { MaterialFeature, FrameFeature, DebugView, ShadingModel, Brdf } kind;
+};
+
+/// Every row, in the order the defines are emitted.
+std::span<const VariantDefine> forwardVariantTable();
+
+struct ForwardVariant {
+    uint64_t key = 0;
+
+    /// `features`: SPECULA_MATERIAL_* bits (the shading bits above them are ignored: pass the
+    /// resolved shading). A model other than the physically based one has no BRDF choices, so
+    /// its key holds none and variants that differ only there share one program.
+    static ForwardVariant make(uint32_t features, const ResolvedShading& shading, DebugView debugView, bool ibl,
+                               bool energyCompensation, bool ssao, bool doomIndexed);
+
+    ResolvedShading shading() const;
+    /// The material or BRDF debug view the key selects, if any.
+    bool debugView() const;
+    std::vector<std::string> defines() const;
+    /// The defines joined by ';' (program labels).
+    std::string name() const;
+    bool operator==(const ForwardVariant&) const = default;
+};
+
+/// Whether `view` replaces shading in the forward pass (a material or BRDF view; the SSAO and
+/// bloom views are passes of their own).
+bool isMaterialDebugView(DebugView view);
+
+} // namespace specula::render

@@ -1,0 +1,66 @@
+#pragma once
+// The forward pass: the scene's surfaces lit by the punctual lights and the environment into
+// the frame's HDR target (or, in a Doom frame, palette indices and levels). Inside it, in order
+// (render/passes/BillboardPass.h gives the reasons):
+//   1. opaque and masked surfaces (the frame's opaque draw list)
+//   2. cutout and opaque billboards
+//   3. the skybox (render/passes/SkyboxPass)
+//   4. blended surfaces, back to front (the blended draw list)
+//   5. blended billboards, then the light gizmos
+// It keeps the programs of every variant it has met (keyed by render/VariantKey), and resolves
+// each material's program and DFG table once a frame (prepareMaterials) so that no compile or
+// bake lands inside the pass or a draw.
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "render/DrawList.h"
+#include "render/VariantKey.h"
+#include "render/graph/FrameGraph.h"
+#include "render/passes/SkyboxPass.h"
+
+namespace specula::render {
+
+class BillboardPass;
+class DoomPass;
+struct FrameContext;
+
+/// The frame's draw lists of its one view, built once and read by every pass that draws it.
+struct FrameDrawLists {
+    DrawList opaque;  ///< opaque and masked surfaces
+    DrawList blended; ///< blended surfaces, back to front
+};
+
+class ForwardPass {
+public:
+    ForwardPass();
+    ~ForwardPass();
+    ForwardPass(const ForwardPass&) = delete;
+    ForwardPass& operator=(const ForwardPass&) = delete;
+
+    /// Each material's program for this frame (compiled on first use), and the DFG table it
+    /// reads, baked on first use.
+    const std::vector<DrawProgram>& prepareMaterials(const FrameContext& frame);
+    /// The draw lists of the frame's view, sorted with prepareMaterials' programs.
+    FrameDrawLists drawLists(const FrameContext& frame) const;
+
+    struct Targets {
+        GraphTexture color; ///< RGBA16F radiance, or a Doom frame's RG8UI indices
+        GraphTexture depth;
+        GraphTexture occlusion; ///< SSAO's, when the frame has it
+    };
+    /// Adds "forward": clears the targets (to the background radiance, or in a Doom frame its
+    /// nearest palette index) and draws into them. `doom` is needed when a material (or the
+    /// frame) uses the Doom model: its tables are bound.
+    void addTo(FrameGraph& graph, const FrameContext& frame, const FrameDrawLists& lists, const Targets& targets,
+               BillboardPass& billboards, DoomPass* doom);
+
+    /// Whether any material is shaded with the Doom model under these settings.
+    static bool anyDoomMaterial(const FrameContext& frame);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> mImpl;
+};
+
+} // namespace specula::render

@@ -1,0 +1,52 @@
+#include "render/passes/TonemapPass.h"
+
+#include <string>
+#include <vector>
+
+#include "render/FrameContext.h"
+#include "render/graph/GlGraphBackend.h"
+#include "shaders/shared/Bindings.h"
+
+namespace specula::render {
+
+gl::Program& TonemapPass::program(int samples, bool automaticExposure, bool encodeSrgb)
+{
+    gl::Program& program = mPrograms[4 * samples + (automaticExposure ? 1 : 0) + (encodeSrgb ? 2 : 0)];
+    if (!program) {
+        std::vector<std::string> defines;
+        if (samples > 1) defines.push_back("MSAA_SAMPLES " + std::to_string(samples));
+        if (automaticExposure) defines.push_back("AUTO_EXPOSURE");
+        if (encodeSrgb) defines.push_back("ENCODE_SRGB");
+        program = gl::Program({.vertex = "post/fullscreen.vert", .fragment = "post/tonemap.frag", .defines = defines,
+                               .label = "tonemap"});
+    }
+    return program;
+}
+
+void TonemapPass::addTo(FrameGraph& graph, const FrameContext& frame, GraphTexture input, int samples, GraphBuffer exposure,
+                        GraphTexture target, bool encodeSrgb)
+{
+    gl::Program& tonemap = program(samples, bool(exposure), encodeSrgb);
+    graph.addPass(
+        samples > 1 ? "resolve+tonemap" : "tonemap",
+        [&](FrameGraph::Builder& b) {
+            b.read(input, Use::Sample);
+            if (exposure) b.read(exposure, Use::StorageRead);
+            b.write(target, Use::ColorAttachment);
+        },
+        [&frame, &tonemap, input, exposure, target, encodeSrgb] {
+            gl::State& state = frame.state();
+            state.bindFramebuffer(&frame.backend.framebuffer({target}));
+            state.viewport(0, 0, frame.width, frame.height);
+            state.apply({.noDepthTest = true, .noDepthWrite = true, .framebufferSrgb = !encodeSrgb});
+            state.useProgram(tonemap);
+            frame.stores.frame.bind(SPECULA_BINDING_FRAME);
+            if (exposure) gl::bindStorageBuffer(SPECULA_BINDING_EXPOSURE, frame.backend.buffer(exposure));
+            state.bindTexture(SPECULA_UNIT_POST_INPUT, frame.backend.texture(input));
+            state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
+            state.bindVertexArray(frame.stores.emptyVertexArray);
+            state.drawTriangles(3, false);
+        });
+}
+
+} // namespace specula::render

@@ -1,0 +1,71 @@
+// The forward pass's variant key (render/VariantKey): one table of bits and defines.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "render/VariantKey.h"
+#include "shaders/shared/MaterialData.h"
+
+using namespace specula;
+using namespace specula::render;
+
+TEST(VariantKey, DefinesFollowTheTable)
+{
+    ResolvedShading s;
+    s.geometry = scene::BrdfGeometry::SchlickGGX;
+    s.diffuse = scene::BrdfDiffuse::Burley;
+    const ForwardVariant v = ForwardVariant::make(SPECULA_MATERIAL_HAS_NORMAL_TEXTURE | SPECULA_MATERIAL_ALPHA_MASK, s,
+                                                  DebugView::None, true, true, false, false);
+    EXPECT_EQ(v.defines(), (std::vector<std::string>{"BRDF_G_SCHLICK_GGX", "BRDF_DIFFUSE_BURLEY", "IBL", "ENERGY_COMPENSATION",
+                                                     "HAS_NORMAL_TEXTURE", "ALPHA_MASK"}));
+    EXPECT_EQ(v.shading(), s);
+    EXPECT_FALSE(v.debugView());
+    // The default: the glTF BRDF, no feature, no define at all.
+    EXPECT_TRUE(ForwardVariant::make(0, {}, DebugView::None, false, false, false, false).defines().empty());
+}
+
+TEST(VariantKey, EveryChoiceRoundTripsAndIsItsOwnKey)
+{
+    std::set<uint64_t> keys;
+    int count = 0;
+    for (int model = 0; model < scene::kShadingModelCount; ++model)
+        for (int g = 0; g <= int(scene::BrdfGeometry::Implicit); ++g)
+            for (int d = 0; d <= int(scene::BrdfDistribution::BlinnPhong); ++d) {
+                ResolvedShading s;
+                s.model = scene::ShadingModel(model);
+                s.geometry = scene::BrdfGeometry(g);
+                s.distribution = scene::BrdfDistribution(d);
+                const ForwardVariant v = ForwardVariant::make(0, s, DebugView::None, false, false, false, false);
+                if (s.model == scene::ShadingModel::Pbr) {
+                    EXPECT_EQ(v.shading(), s);
+                    ++count;
+                    keys.insert(v.key);
+                } else {
+                    // The classic models have no BRDF choices: one program each.
+                    EXPECT_EQ(v.shading().model, s.model);
+                    EXPECT_EQ(v.shading().geometry, scene::BrdfGeometry::SmithGGX);
+                    keys.insert(v.key);
+                }
+            }
+    EXPECT_EQ(keys.size(), size_t(count + scene::kShadingModelCount - 1));
+}
+
+TEST(VariantKey, MaterialDebugViewsSetTheirDefineOthersDoNot)
+{
+    const auto view = [](DebugView d) { return ForwardVariant::make(0, {}, d, false, false, false, false); };
+    EXPECT_EQ(view(DebugView::Normal).defines(), (std::vector<std::string>{"DEBUG_VIEW_NORMAL"}));
+    EXPECT_TRUE(view(DebugView::Normal).debugView());
+    EXPECT_TRUE(view(DebugView::Ssao).defines().empty()) << "the SSAO view is a pass of its own";
+    EXPECT_TRUE(view(DebugView::Bloom).defines().empty());
+}
+
+TEST(VariantKey, TableRowsAreDistinct)
+{
+    std::set<std::string> defines;
+    for (const VariantDefine& row : forwardVariantTable()) {
+        EXPECT_TRUE(defines.insert(row.define).second) << row.define;
+        EXPECT_NE(row.value, 0u) << row.define << ": a default has no define";
+        EXPECT_EQ(row.value & ~row.mask, 0u) << row.define;
+    }
+}
