@@ -146,6 +146,17 @@ struct Renderer::Impl {
     }
 
     gl::Texture& lastTexture(GraphTexture t) const { return backend.pooled(last->graph.physical(t)); }
+
+    /// Builds and compiles the frame `requested` asks for, without running it.
+    void buildOnly(const View& view, const FrameSettings& requested, Frame& frame)
+    {
+        const FrameSettings settings = effectiveSettings(requested);
+        checkSupport(settings);
+        FrameStats unused;
+        const FrameContext context{view, settings, settings.width, settings.height, settings.msaa, 1.0f, stores, backend, unused};
+        buildFrame(frame, passes, context);
+        frame.graph.compile();
+    }
 };
 
 Renderer::Renderer() : mImpl(std::make_unique<Impl>()) {}
@@ -194,19 +205,11 @@ void Renderer::invalidateGlState()
     mImpl->stores.state.reset();
 }
 
-void Renderer::prepare(const FrameSettings& requested)
+void Renderer::prepare(const FrameSettings& settings)
 {
-    Impl& r = *mImpl;
-    const FrameSettings settings = effectiveSettings(requested);
-    r.checkSupport(settings);
-    // Build the frame (compiling its programs, baking its tables) without running it.
-    const View view;
-    FrameStats stats;
-    const FrameContext context{view, settings, settings.width, settings.height, settings.msaa, 1.0f,
-                               r.stores, r.backend, stats};
+    // Programs are compiled and tables baked as the frame is built; nothing runs.
     Frame frame;
-    buildFrame(frame, r.passes, context);
-    frame.graph.compile();
+    mImpl->buildOnly(View{}, settings, frame);
 }
 
 void Renderer::setGpuTiming(bool enabled)
@@ -224,17 +227,10 @@ const FrameStats& Renderer::stats() const
     return mImpl->stats;
 }
 
-std::string Renderer::frameGraphDot(const View& view, const FrameSettings& requested)
+std::string Renderer::frameGraphDot(const View& view, const FrameSettings& settings)
 {
-    Impl& r = *mImpl;
-    const FrameSettings settings = effectiveSettings(requested);
-    r.checkSupport(settings);
-    FrameStats stats;
-    const FrameContext context{view, settings, settings.width, settings.height, settings.msaa, 1.0f,
-                               r.stores, r.backend, stats};
     Frame frame;
-    buildFrame(frame, r.passes, context);
-    frame.graph.compile();
+    mImpl->buildOnly(view, settings, frame);
     return frame.graph.toDot();
 }
 

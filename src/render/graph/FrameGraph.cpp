@@ -86,33 +86,36 @@ GraphTexture FrameGraph::createTexture(const std::string& name, const GraphTextu
     return {uint32_t(mResources.size() - 1)};
 }
 
+void FrameGraph::Builder::checkedAccess(ResourceKind kind, uint32_t id, Use use, bool write)
+{
+    if (write && !isWrite(use))
+        throw Error("frame graph: pass '{}' writes with a read use ({})", mGraph.mPasses[mPass].name, useName(use));
+    if (!write && (!isRead(use) || isWrite(use)))
+        throw Error("frame graph: pass '{}' reads with a write use ({})", mGraph.mPasses[mPass].name, useName(use));
+    access(kind, id, use);
+}
+
 GraphTexture FrameGraph::Builder::read(GraphTexture texture, Use use)
 {
-    if (!isRead(use) || isWrite(use))
-        throw Error("frame graph: pass '{}' reads with a write use ({})", mGraph.mPasses[mPass].name, useName(use));
-    access(ResourceKind::Texture, texture.id, use);
+    checkedAccess(ResourceKind::Texture, texture.id, use, false);
     return texture;
 }
 
 GraphTexture FrameGraph::Builder::write(GraphTexture texture, Use use)
 {
-    if (!isWrite(use)) throw Error("frame graph: pass '{}' writes with a read use ({})", mGraph.mPasses[mPass].name, useName(use));
-    access(ResourceKind::Texture, texture.id, use);
+    checkedAccess(ResourceKind::Texture, texture.id, use, true);
     return texture;
 }
 
 GraphBuffer FrameGraph::Builder::read(GraphBuffer buffer, Use use)
 {
-    if (!isRead(use) || isWrite(use))
-        throw Error("frame graph: pass '{}' reads with a write use ({})", mGraph.mPasses[mPass].name, useName(use));
-    access(ResourceKind::Buffer, buffer.id, use);
+    checkedAccess(ResourceKind::Buffer, buffer.id, use, false);
     return buffer;
 }
 
 GraphBuffer FrameGraph::Builder::write(GraphBuffer buffer, Use use)
 {
-    if (!isWrite(use)) throw Error("frame graph: pass '{}' writes with a read use ({})", mGraph.mPasses[mPass].name, useName(use));
-    access(ResourceKind::Buffer, buffer.id, use);
+    checkedAccess(ResourceKind::Buffer, buffer.id, use, true);
     return buffer;
 }
 

@@ -107,6 +107,7 @@ public:
         friend class FrameGraph;
         Builder(FrameGraph& graph, uint32_t pass) : mGraph(graph), mPass(pass) {}
         void access(ResourceKind kind, uint32_t id, Use use);
+        void checkedAccess(ResourceKind kind, uint32_t id, Use use, bool write);
         FrameGraph& mGraph;
         uint32_t mPass;
     };

@@ -2,7 +2,7 @@
 
 #include "render/FrameContext.h"
 #include "render/graph/GlGraphBackend.h"
-#include "shaders/shared/Bindings.h"
+#include "render/passes/Fullscreen.h"
 
 namespace specula::render {
 
@@ -16,16 +16,13 @@ void DebugViewPass::addTo(FrameGraph& graph, const FrameContext& frame, GraphTex
             b.write(target, Use::ColorAttachment);
         },
         [this, &frame, occlusion, target] {
-            gl::State& state = frame.state();
-            state.bindFramebuffer(&frame.backend.framebuffer({target}));
-            state.viewport(0, 0, frame.width, frame.height);
             // No sRGB encoding: the byte is the occlusion × 255.
-            state.apply({.noDepthTest = true, .noDepthWrite = true});
-            state.useProgram(mProgram);
-            state.bindTexture(SPECULA_UNIT_POST_INPUT, frame.backend.texture(occlusion));
-            state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
-            state.bindVertexArray(frame.stores.emptyVertexArray);
-            state.drawTriangles(3, false);
+            drawFullscreen(frame.state(), {.target = &frame.backend.framebuffer({target}),
+                                           .width = frame.width,
+                                           .height = frame.height,
+                                           .program = &mProgram,
+                                           .input = &frame.backend.texture(occlusion),
+                                           .triangle = &frame.stores.emptyVertexArray});
         });
 }
 

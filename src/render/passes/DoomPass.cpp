@@ -10,6 +10,7 @@
 #include "render/FrameContext.h"
 #include "render/Tonemap.h"
 #include "render/graph/GlGraphBackend.h"
+#include "render/passes/Fullscreen.h"
 #include "scene/DoomPalette.h"
 #include "shaders/shared/Bindings.h"
 
@@ -102,17 +103,14 @@ void DoomPass::addTo(FrameGraph& graph, const FrameContext& frame, GraphTexture 
             b.write(ldr, Use::ColorAttachment);
         },
         [this, &frame, &p, indexed, hdr, ldr] {
-            gl::State& state = frame.state();
-            state.bindFramebuffer(&frame.backend.framebuffer({hdr, ldr}));
-            state.viewport(0, 0, frame.width, frame.height);
+            bindTables(frame.state());
             // No sRGB encoding: colour 1 receives the palette's bytes as they are.
-            state.apply({.noDepthTest = true, .noDepthWrite = true});
-            state.useProgram(p.program);
-            bindTables(state);
-            state.bindTexture(SPECULA_UNIT_POST_INPUT, frame.backend.texture(indexed));
-            state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
-            state.bindVertexArray(frame.stores.emptyVertexArray);
-            state.drawTriangles(3, false);
+            drawFullscreen(frame.state(), {.target = &frame.backend.framebuffer({hdr, ldr}),
+                                           .width = frame.width,
+                                           .height = frame.height,
+                                           .program = &p.program,
+                                           .input = &frame.backend.texture(indexed),
+                                           .triangle = &frame.stores.emptyVertexArray});
         });
 }
 

@@ -8,6 +8,7 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "render/graph/GlGraphBackend.h"
+#include "render/passes/Fullscreen.h"
 #include "shaders/shared/Bindings.h"
 
 namespace specula::render {
@@ -55,16 +56,15 @@ void FxaaPass::apply(gl::State& state, const gl::Texture& input, const gl::Frame
 {
     Impl& r = *mImpl;
     r.ensureProgram();
-    state.bindFramebuffer(&target);
-    state.viewport(0, 0, input.width(), input.height());
-    // The values are encoded already: stored as they are.
-    state.apply({.noDepthTest = true, .noDepthWrite = true});
-    state.useProgram(r.program);
     r.program.set(r.texel, glm::vec2(1.0f / float(input.width()), 1.0f / float(input.height())));
-    state.bindTexture(SPECULA_UNIT_POST_INPUT, input);
-    state.bindSampler(SPECULA_UNIT_POST_INPUT, &r.linearClamp);
-    state.bindVertexArray(r.emptyVertexArray);
-    state.drawTriangles(3, false);
+    // The values are encoded already: stored as they are.
+    drawFullscreen(state, {.target = &target,
+                           .width = input.width(),
+                           .height = input.height(),
+                           .program = &r.program,
+                           .input = &input,
+                           .sampler = &r.linearClamp,
+                           .triangle = &r.emptyVertexArray});
 }
 
 } // namespace specula::render

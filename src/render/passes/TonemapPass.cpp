@@ -5,6 +5,7 @@
 
 #include "render/FrameContext.h"
 #include "render/graph/GlGraphBackend.h"
+#include "render/passes/Fullscreen.h"
 #include "shaders/shared/Bindings.h"
 
 namespace specula::render {
@@ -36,16 +37,16 @@ void TonemapPass::addTo(FrameGraph& graph, const FrameContext& frame, GraphTextu
         },
         [&frame, &tonemap, input, exposure, target, encodeSrgb] {
             gl::State& state = frame.state();
-            state.bindFramebuffer(&frame.backend.framebuffer({target}));
-            state.viewport(0, 0, frame.width, frame.height);
-            state.apply({.noDepthTest = true, .noDepthWrite = true, .framebufferSrgb = !encodeSrgb});
-            state.useProgram(tonemap);
             frame.stores.frame.bind(SPECULA_BINDING_FRAME);
             if (exposure) gl::bindStorageBuffer(SPECULA_BINDING_EXPOSURE, frame.backend.buffer(exposure));
-            state.bindTexture(SPECULA_UNIT_POST_INPUT, frame.backend.texture(input));
-            state.bindSampler(SPECULA_UNIT_POST_INPUT, nullptr);
-            state.bindVertexArray(frame.stores.emptyVertexArray);
-            state.drawTriangles(3, false);
+            // Into FXAA's UNORM input the shader encodes; into the sRGB target GL does.
+            drawFullscreen(state, {.target = &frame.backend.framebuffer({target}),
+                                   .width = frame.width,
+                                   .height = frame.height,
+                                   .pipeline = {.noDepthTest = true, .noDepthWrite = true, .framebufferSrgb = !encodeSrgb},
+                                   .program = &tonemap,
+                                   .input = &frame.backend.texture(input),
+                                   .triangle = &frame.stores.emptyVertexArray});
         });
 }
 
