@@ -227,7 +227,6 @@ bool Viewer::reloadChangedShaders()
 void Viewer::addLight(scene::Light::Type type)
 {
     std::vector<render::PlacedLight> lights = currentLights(mRenderer->lights());
-    if (lights.size() >= SPECULA_MAX_LIGHTS) throw Error("at most {} lights", SPECULA_MAX_LIGHTS);
     render::PlacedLight placed;
     placed.light.type = type;
     placed.light.name = type == scene::Light::Type::Spot ? "spot" : type == scene::Light::Type::Point ? "point" : "sun";
