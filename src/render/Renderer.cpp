@@ -549,11 +549,6 @@ const Sh9* Renderer::environmentSh() const
     return mImpl->ibl.hasEnvironment() ? &mImpl->ibl.sh() : nullptr;
 }
 
-LightBuffer& Renderer::lights()
-{
-    return mImpl->lights;
-}
-
 void Renderer::prepare(const FrameSettings& requested)
 {
     Impl& r = *mImpl;
@@ -904,6 +899,32 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
         break;
     }
     }
+}
+
+// The lights (render/LightBuffer).
+
+int Renderer::lightCount() const
+{
+    return mImpl->lights.count();
+}
+
+const PlacedLight& Renderer::light(int index) const
+{
+    return mImpl->lights.light(index);
+}
+
+void Renderer::setLights(const std::vector<PlacedLight>& lights)
+{
+    mImpl->lights.setAll(lights);
+}
+
+LightWrite Renderer::setLight(int index, const PlacedLight& light)
+{
+    LightBuffer& lights = mImpl->lights;
+    const size_t before = lights.buffer().bytesUpdated();
+    lights.set(index, light);
+    const gl::Buffer::Range range = lights.buffer().lastUpdate();
+    return {range.offset, range.size, lights.buffer().bytesUpdated() - before, LightBuffer::offsetOf(index), sizeof(shared::GpuLight)};
 }
 
 } // namespace specula::render

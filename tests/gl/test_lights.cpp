@@ -185,7 +185,7 @@ ImageFloat renderManyLights(scene::ShadingModel model, float* exposureScale)
     }
     render::Renderer renderer;
     renderer.setScene(s);
-    EXPECT_EQ(renderer.lights().count(), kLightCount);
+    EXPECT_EQ(renderer.lightCount(), kLightCount);
     renderer.setMaterialParameter(0, render::MaterialParameter::PhongSpecular, glm::vec4(0.0f)); // ks = 0
     render::FrameSettings settings;
     settings.width = settings.height = 32;
