@@ -28,10 +28,10 @@ std::string lowerExtension(const std::string& path)
     return extension;
 }
 
-std::vector<render::PlacedLight> currentLights(const render::LightBuffer& buffer)
+std::vector<render::PlacedLight> currentLights(const render::Renderer& renderer)
 {
     std::vector<render::PlacedLight> lights;
-    for (int i = 0; i < buffer.count(); ++i) lights.push_back(buffer.light(i));
+    for (int i = 0; i < renderer.lightCount(); ++i) lights.push_back(renderer.light(i));
     return lights;
 }
 
@@ -76,7 +76,7 @@ void Viewer::loadScene(const std::string& name)
     mDocument = std::move(document);
     mDefaultMaterial = scene::Material{.name = "default"};
     mSceneName = name.empty() ? "demo" : name;
-    selectedLight = mRenderer->lights().count() > 0 ? 0 : -1;
+    selectedLight = mRenderer->lightCount() > 0 ? 0 : -1;
     selectedMaterial = 0;
     mSceneCamera = first && mOptions.camera >= 0 ? mOptions.camera : -1;
     mCamera.frame(mDocument.scene.worldBounds());
@@ -189,7 +189,7 @@ bool Viewer::reloadShaders()
         auto fresh = std::make_unique<render::Renderer>();
         fresh->setCacheDirectory(cli::cacheDirectory(mOptions));
         fresh->setScene(mDocument.scene);
-        fresh->lights().setAll(currentLights(mRenderer->lights()));
+        fresh->setLights(currentLights(*mRenderer));
         // Every material's edits, from the records the old renderer draws with: the default
         // material's too, and fields plain materials do not hold (the classic ks).
         for (int i = 0; i < mRenderer->materialCount(); ++i) {
@@ -226,8 +226,7 @@ bool Viewer::reloadChangedShaders()
 
 void Viewer::addLight(scene::Light::Type type)
 {
-    std::vector<render::PlacedLight> lights = currentLights(mRenderer->lights());
-    if (lights.size() >= SPECULA_MAX_LIGHTS) throw Error("at most {} lights", SPECULA_MAX_LIGHTS);
+    std::vector<render::PlacedLight> lights = currentLights(*mRenderer);
     render::PlacedLight placed;
     placed.light.type = type;
     placed.light.name = type == scene::Light::Type::Spot ? "spot" : type == scene::Light::Type::Point ? "point" : "sun";
@@ -245,29 +244,25 @@ void Viewer::addLight(scene::Light::Type type)
     placed.light.innerConeAngle = glm::radians(15.0f);
     placed.light.outerConeAngle = glm::radians(25.0f);
     lights.push_back(placed);
-    mRenderer->lights().setAll(lights);
+    mRenderer->setLights(lights);
     selectedLight = int(lights.size()) - 1;
 }
 
 void Viewer::removeLight(int index)
 {
-    std::vector<render::PlacedLight> lights = currentLights(mRenderer->lights());
+    std::vector<render::PlacedLight> lights = currentLights(*mRenderer);
     if (index < 0 || index >= int(lights.size())) throw Error("no light {} (there are {})", index, lights.size());
     lights.erase(lights.begin() + index);
-    mRenderer->lights().setAll(lights);
+    mRenderer->setLights(lights);
     selectedLight = std::min(selectedLight, int(lights.size()) - 1);
 }
 
 void Viewer::editLight(int index, const render::PlacedLight& light)
 {
-    render::LightBuffer& buffer = mRenderer->lights();
-    if (index < 0 || index >= buffer.count()) throw Error("no light {} (there are {})", index, buffer.count());
-    const size_t before = buffer.buffer().bytesUpdated();
-    buffer.set(index, light);
-    const gl::Buffer::Range range = buffer.buffer().lastUpdate();
-    mLastLightUpload = {index, range.offset, range.size, buffer.buffer().bytesUpdated() - before, buffer.offsetOf(index),
-                        sizeof(shared::GpuLight)};
-    log::debug("light {}: uploaded {} bytes at offset {}", index, mLastLightUpload.bytes, range.offset);
+    if (index < 0 || index >= mRenderer->lightCount()) throw Error("no light {} (there are {})", index, mRenderer->lightCount());
+    const render::LightWrite w = mRenderer->setLight(index, light);
+    mLastLightUpload = {index, w.offset, w.size, w.bytes, w.lightOffset, w.lightSize};
+    log::debug("light {}: uploaded {} bytes at offset {}", index, w.bytes, w.offset);
 }
 
 scene::Material& Viewer::material(int index)

@@ -12,7 +12,6 @@
 #include "OrbitCamera.h"
 #include "ShaderWatcher.h"
 #include "app/cli/SceneSetup.h"
-#include "render/LightBuffer.h"
 #include "render/Renderer.h"
 
 namespace specula::gl {

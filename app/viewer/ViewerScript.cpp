@@ -83,9 +83,9 @@ float* valueTarget(Viewer& viewer, const std::string& name)
 
 render::PlacedLight lightAt(Viewer& viewer, int index)
 {
-    const render::LightBuffer& lights = viewer.renderer().lights();
-    if (index < 0 || index >= lights.count()) throw Error("no light {} (there are {})", index, lights.count());
-    return lights.light(index);
+    const render::Renderer& renderer = viewer.renderer();
+    if (index < 0 || index >= renderer.lightCount()) throw Error("no light {} (there are {})", index, renderer.lightCount());
+    return renderer.light(index);
 }
 
 } // namespace

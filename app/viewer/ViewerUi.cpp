@@ -119,7 +119,7 @@ void scenePanel(Viewer& viewer)
 void lightsPanel(Viewer& viewer)
 {
     if (!panelHeader(viewer, "Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    render::LightBuffer& lights = viewer.renderer().lights();
+    const render::Renderer& renderer = viewer.renderer();
     if (ImGui::Button("+ point")) guarded(viewer, [&] { viewer.addLight(scene::Light::Type::Point); });
     ImGui::SameLine();
     if (ImGui::Button("+ spot")) guarded(viewer, [&] { viewer.addLight(scene::Light::Type::Spot); });
@@ -127,15 +127,15 @@ void lightsPanel(Viewer& viewer)
     if (ImGui::Button("+ directional")) guarded(viewer, [&] { viewer.addLight(scene::Light::Type::Directional); });
     ImGui::Checkbox("gizmos", &viewer.settings().gizmos);
     static constexpr const char* kTypes[] = {"directional", "point", "spot"};
-    for (int i = 0; i < lights.count(); ++i) {
-        const render::PlacedLight& l = lights.light(i);
+    for (int i = 0; i < renderer.lightCount(); ++i) {
+        const render::PlacedLight& l = renderer.light(i);
         const std::string label = std::to_string(i) + ": " + (l.light.name.empty() ? "light" : l.light.name) + " (" +
                                   kTypes[int(l.light.type)] + ")";
         if (ImGui::Selectable(label.c_str(), viewer.selectedLight == i)) viewer.selectedLight = i;
     }
     const int i = viewer.selectedLight;
-    if (i < 0 || i >= lights.count()) return;
-    render::PlacedLight l = lights.light(i);
+    if (i < 0 || i >= renderer.lightCount()) return;
+    render::PlacedLight l = renderer.light(i);
     bool changed = false;
     ImGui::Separator();
     changed |= ImGui::ColorEdit3("colour", &l.light.color.x);

@@ -1,6 +1,6 @@
 // The reflection models before physically based shading, shared by the forward pass's
 // fragment shader (flat, Phong, Blinn-Phong) and vertex shader (Gouraud). The includer
-// declares the lights block (lightData) and the material block (material).
+// declares the material block (material); the lights come from lights/light_list.glsl.
 //
 // Phong 1975, "Illumination for Computer Generated Pictures": I = ka Ia + kd (N·L) Il +
 // ks (R·V)^n Il. Blinn 1977, "Models of Light Reflection for Computer Synthesized Pictures":
@@ -8,7 +8,9 @@
 // white Phong diffuse surface is exactly as bright as a white Lambertian one under the same
 // light, and the models can be compared with the physically based one in one scene.
 #include "../common/math.glsl"
+#include "../lights/light_list.glsl"
 #include "../lights/punctual.glsl"
+#include "../lights/shadow.glsl"
 
 // material.phong.a, or when it is 0 the exponent whose Blinn-Phong lobe matches the
 // microfacet α = perceptualRoughness² (Walter et al. 2007, eq. 30: n = 2/α² - 2), clamped to
@@ -20,18 +22,21 @@ float classicShininess(float perceptualRoughness)
     return clamp(2.0 / (alpha * alpha) - 2.0, 1.0, 8192.0);
 }
 
-// Sums over the lights of the diffuse factor E (N·L) / π and the specular factor
-// E (R·V)^n / π (or (N·H)^n with BLINN), for the caller to weight by kd and ks.
-void classicLighting(vec3 p, vec3 n, vec3 v, float shininess, bool blinn, out vec3 diffuse, out vec3 specular)
+// Sums over `list`'s lights of the diffuse factor E (N·L) / π and the specular factor
+// E (R·V)^n / π (or (N·H)^n with BLINN), each light's E scaled by its shadow visibility, for
+// the caller to weight by kd and ks. The caller finds the list (lightList: the fragment
+// shader has gl_FragCoord, the vertex shader does not).
+void classicLighting(LightList list, vec3 p, vec3 n, vec3 v, float shininess, bool blinn, out vec3 diffuse, out vec3 specular)
 {
     diffuse = vec3(0.0);
     specular = vec3(0.0);
-    uint lightCount = min(lightData.count.x, uint(SPECULA_MAX_LIGHTS));
-    for (uint i = 0u; i < lightCount; ++i) {
+    for (uint k = 0u; k < list.count; ++k) {
+        uint index = lightListIndex(list, k);
         vec3 l;
-        vec3 illuminance = lightIlluminance(lightData.lights[i], p, l);
+        vec3 illuminance = lightIlluminance(lightAt(index), p, l);
         float NoL = dot(n, l);
         if (NoL <= 0.0) continue; // no highlight on the unlit side (Phong 1975)
+        illuminance *= shadowVisibility(index, p, n);
         float lobe = blinn ? saturate(dot(n, normalize(l + v))) : saturate(dot(reflect(-l, n), v));
         diffuse += illuminance * (NoL * INV_PI);
         specular += illuminance * (pow(lobe, shininess) * INV_PI);

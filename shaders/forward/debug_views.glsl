@@ -2,7 +2,7 @@
 // BRDF in place of the frame. The renderer turns exposure and tone mapping off for them, so
 // the sRGB output shows colours (base colour, emissive) as authored, and scalars, normals and
 // BRDF terms are written sRGB-decoded so that the 8-bit output is value × 255.
-// Included by pbr.frag after brdf/brdf.glsl and lights/punctual.glsl.
+// Included by pbr.frag after brdf/brdf.glsl and lights/ (light_list.glsl, punctual.glsl).
 #include "../common/color.glsl"
 
 #if defined(DEBUG_VIEW_BASE_COLOR) || defined(DEBUG_VIEW_NORMAL) || defined(DEBUG_VIEW_ROUGHNESS) || \
@@ -20,9 +20,9 @@ vec3 debugBytes(vec3 value)
 // first light of the frame (black without lights and where it does not reach).
 vec3 debugBrdfTerm(vec3 baseColor, float metallic, float perceptualRoughness, vec3 n, vec3 v)
 {
-    if (lightData.count.x == 0u) return vec3(0.0);
+    if (frameLightCount() == 0u) return vec3(0.0);
     vec3 l;
-    lightIlluminance(lightData.lights[0], vWorldPosition, l);
+    lightIlluminance(lightAt(0u), vWorldPosition, l);
     float NoL = dot(n, l);
     if (NoL <= 0.0) return vec3(0.0);
     SurfaceBrdf s = makeSurfaceBrdf(baseColor, metallic, perceptualRoughness, material.specular);

@@ -10,13 +10,14 @@
 #include "../shared/FrameData.h"
 #include "../shared/MaterialData.h"
 #include "../brdf/brdf.glsl"
+#include "../lights/light_list.glsl"
 #include "../lights/punctual.glsl"
+#include "../lights/shadow.glsl"
 #if defined(IBL)
 #include "../ibl/ibl.glsl"
 #endif
 
 layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
-layout(std140, binding = SPECULA_BINDING_LIGHTS) uniform LightsBlock { LightBlock lightData; };
 layout(std140, binding = SPECULA_BINDING_MATERIAL) uniform MaterialBlock { GpuMaterial material; };
 
 layout(binding = SPECULA_UNIT_BASE_COLOR) uniform sampler2D uBaseColorTexture;
@@ -162,12 +163,14 @@ void main()
 #endif
 
     vec3 color = vec3(0.0);
-    uint lightCount = min(lightData.count.x, uint(SPECULA_MAX_LIGHTS));
-    for (uint i = 0u; i < lightCount; ++i) {
+    LightList list = lightList(vWorldPosition, gl_FragCoord);
+    for (uint k = 0u; k < list.count; ++k) {
+        uint index = lightListIndex(list, k);
         vec3 l;
-        vec3 illuminance = lightIlluminance(lightData.lights[i], vWorldPosition, l);
+        vec3 illuminance = lightIlluminance(lightAt(index), vWorldPosition, l);
         float NoL = dot(n, l);
         if (NoL <= 0.0) continue;
+        illuminance *= shadowVisibility(index, vWorldPosition, n);
         vec3 diffuse, specular;
         evaluateBrdfLobes(surface, n, v, l, diffuse, specular);
         color += (diffuse + specular * energyCompensation) * illuminance * NoL;

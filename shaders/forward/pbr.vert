@@ -6,9 +6,10 @@
 
 layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
 #if defined(SHADING_GOURAUD)
-#include "../shared/LightData.h"
+// The lights are a storage buffer (lights/light_list.glsl). GL 4.5 does not promise vertex
+// shaders any (its minimum GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS is 0); llvmpipe and the desktop
+// drivers offer them.
 #include "../shared/MaterialData.h"
-layout(std140, binding = SPECULA_BINDING_LIGHTS) uniform LightsBlock { LightBlock lightData; };
 layout(std140, binding = SPECULA_BINDING_MATERIAL) uniform MaterialBlock { GpuMaterial material; };
 #include "classic_lighting.glsl"
 out vec3 vGouraudDiffuse;
@@ -47,6 +48,6 @@ void main()
     float perceptualRoughness = clamp(material.params.y, 0.045, 1.0);
     vec3 n = normalize(vNormal);
     vec3 v = normalize(frame.cameraPosition.xyz - world.xyz);
-    classicLighting(world.xyz, n, v, classicShininess(perceptualRoughness), false, vGouraudDiffuse, vGouraudSpecular);
+    classicLighting(lightList(world.xyz), world.xyz, n, v, classicShininess(perceptualRoughness), false, vGouraudDiffuse, vGouraudSpecular);
 #endif
 }

@@ -43,7 +43,7 @@ vec3 shadeClassic(vec3 baseColor, float metallic, float perceptualRoughness, vec
 #else
     const bool blinn = false;
 #endif
-    classicLighting(vWorldPosition, n, v, classicShininess(perceptualRoughness), blinn, diffuse, specular);
+    classicLighting(lightList(vWorldPosition, gl_FragCoord), vWorldPosition, n, v, classicShininess(perceptualRoughness), blinn, diffuse, specular);
 #endif
     // Ambient (Phong's ka Ia): the frame's constant ambient, plus the environment's
     // irradiance when image-based lighting is on; no specular image-based light. ka is the

@@ -5,11 +5,11 @@
 
 // Uniform buffers
 #define SPECULA_BINDING_FRAME 0
-#define SPECULA_BINDING_LIGHTS 1
 #define SPECULA_BINDING_MATERIAL 2 // one material's range of the material buffer, per draw
 #define SPECULA_BINDING_ENVIRONMENT 4
 // Storage buffers
 #define SPECULA_BINDING_BILLBOARDS 3
+#define SPECULA_BINDING_LIGHTS 9 // LightHeader + GpuLight[] (shared/LightData.h, lights/light_list.glsl)
 // Texture units of the forward pass
 #define SPECULA_UNIT_BASE_COLOR 0
 #define SPECULA_UNIT_METALLIC_ROUGHNESS 1

@@ -214,4 +214,11 @@ void bindStorageBuffer(uint32_t binding, const Buffer& buffer)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer.id());
 }
 
+size_t maxStorageBlockSize()
+{
+    GLint64 size = 1 << 24; // the GL 4.3 minimum, should the query fail
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &size);
+    return size_t(size);
+}
+
 } // namespace specula::gl

@@ -113,5 +113,8 @@ void bindUniformBufferRange(uint32_t binding, const Buffer& buffer, size_t offse
 /// GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT of the current context.
 int uniformBufferOffsetAlignment();
 void bindStorageBuffer(uint32_t binding, const Buffer& buffer);
+/// GL_MAX_SHADER_STORAGE_BLOCK_SIZE of the current context: the most bytes one storage block
+/// of a shader can reach (128 MiB on llvmpipe).
+size_t maxStorageBlockSize();
 
 } // namespace specula::gl

@@ -1,14 +1,36 @@
 #include "render/LightBuffer.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
-#include "core/Log.h"
+#include "core/Error.h"
+#include "gl/State.h"
 #include "shaders/shared/Bindings.h"
 
 namespace specula::render {
 
-LightBuffer::LightBuffer() : mUbo("lights") {}
+namespace {
+
+// A first buffer for a few dozen lights (4 KiB); scenes with more double it as they grow.
+constexpr size_t kInitialCapacity = 64;
+
+gl::Buffer makeBuffer(size_t capacity)
+{
+    // Zero-filled, so that bytes past the count read back the same every time (tests).
+    const std::vector<std::byte> zeros(sizeof(shared::LightHeader) + capacity * sizeof(shared::GpuLight));
+    return gl::Buffer(zeros.size(), zeros.data(), "lights");
+}
+
+} // namespace
+
+LightBuffer::LightBuffer()
+    : mBuffer(makeBuffer(kInitialCapacity)), mCapacity(int(kInitialCapacity)),
+      mMaxCount(int(std::min<size_t>((gl::maxStorageBlockSize() - sizeof(shared::LightHeader)) / sizeof(shared::GpuLight), INT32_MAX)))
+{
+}
 
 shared::GpuLight LightBuffer::pack(const PlacedLight& placed)
 {
@@ -27,33 +49,43 @@ shared::GpuLight LightBuffer::pack(const PlacedLight& placed)
 
 void LightBuffer::setAll(const std::vector<PlacedLight>& lights)
 {
+    if (lights.size() > size_t(mMaxCount))
+        throw Error("{} lights: a shader's storage block holds at most {} here (GL_MAX_SHADER_STORAGE_BLOCK_SIZE)", lights.size(), mMaxCount);
     mLights = lights;
-    if (mLights.size() > SPECULA_MAX_LIGHTS) {
-        log::warn("{} lights, only the first {} are used", mLights.size(), SPECULA_MAX_LIGHTS);
-        mLights.resize(SPECULA_MAX_LIGHTS);
+    size_t capacity = size_t(mCapacity);
+    while (capacity < mLights.size()) capacity *= 2;
+    capacity = std::min(capacity, std::max(size_t(mMaxCount), size_t(mCapacity))); // doubling never passes the limit
+    if (capacity != size_t(mCapacity)) {
+        mBuffer = makeBuffer(capacity);
+        mCapacity = int(capacity);
     }
-    auto& block = mUbo.data();
-    block = {};
-    block.count = glm::uvec4(uint32_t(mLights.size()), 0, 0, 0);
-    for (size_t i = 0; i < mLights.size(); ++i) block.lights[i] = pack(mLights[i]);
-    mUbo.upload();
+    // Header and lights in one upload; what lies past the count is never read.
+    std::vector<std::byte> bytes(offsetOf(count()));
+    const shared::LightHeader header{glm::uvec4(uint32_t(mLights.size()), 0u, 0u, 0u)};
+    std::memcpy(bytes.data(), &header, sizeof header);
+    for (size_t i = 0; i < mLights.size(); ++i) {
+        const shared::GpuLight gpu = pack(mLights[i]);
+        std::memcpy(bytes.data() + offsetOf(int(i)), &gpu, sizeof gpu);
+    }
+    mBuffer.update(0, bytes.size(), bytes.data());
 }
 
 void LightBuffer::set(int index, const PlacedLight& light)
 {
+    assert(index >= 0 && index < count());
     mLights[size_t(index)] = light;
-    mUbo.data().lights[index] = pack(light);
-    mUbo.upload(&shared::LightBlock::lights, size_t(index));
+    const shared::GpuLight gpu = pack(light);
+    mBuffer.update(offsetOf(index), sizeof gpu, &gpu);
 }
 
-size_t LightBuffer::offsetOf(int index) const
+size_t LightBuffer::offsetOf(int index)
 {
-    return mUbo.offsetOf(&shared::LightBlock::lights, size_t(index));
+    return sizeof(shared::LightHeader) + size_t(index) * sizeof(shared::GpuLight);
 }
 
 void LightBuffer::bind() const
 {
-    mUbo.bind(SPECULA_BINDING_LIGHTS);
+    gl::bindStorageBuffer(SPECULA_BINDING_LIGHTS, mBuffer);
 }
 
 std::vector<PlacedLight> placeLights(const scene::Scene& scene)

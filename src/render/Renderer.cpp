@@ -195,11 +195,6 @@ const Sh9* Renderer::environmentSh() const
     return mImpl->stores.ibl.hasEnvironment() ? &mImpl->stores.ibl.sh() : nullptr;
 }
 
-LightBuffer& Renderer::lights()
-{
-    return mImpl->stores.lights;
-}
-
 void Renderer::invalidateGlState()
 {
     mImpl->stores.state.reset();
@@ -423,6 +418,32 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
         break;
     }
     }
+}
+
+// The lights (render/LightBuffer).
+
+int Renderer::lightCount() const
+{
+    return mImpl->stores.lights.count();
+}
+
+const PlacedLight& Renderer::light(int index) const
+{
+    return mImpl->stores.lights.light(index);
+}
+
+void Renderer::setLights(const std::vector<PlacedLight>& lights)
+{
+    mImpl->stores.lights.setAll(lights);
+}
+
+LightWrite Renderer::setLight(int index, const PlacedLight& light)
+{
+    LightBuffer& lights = mImpl->stores.lights;
+    const size_t before = lights.buffer().bytesUpdated();
+    lights.set(index, light);
+    const gl::Buffer::Range range = lights.buffer().lastUpdate();
+    return {range.offset, range.size, lights.buffer().bytesUpdated() - before, LightBuffer::offsetOf(index), sizeof(shared::GpuLight)};
 }
 
 } // namespace specula::render

@@ -12,14 +12,13 @@
 
 #include "core/ImageIO.h"
 #include "render/ImageBasedLighting.h"
+#include "render/PlacedLight.h"
 #include "render/PostSettings.h"
 #include "render/Tonemap.h"
 #include "render/View.h"
 #include "scene/Scene.h"
 
 namespace specula::render {
-
-class LightBuffer;
 
 /// Masking-shadowing term of the BRDF (scene/MaterialModel.h lists every choice).
 using BrdfGeometry = scene::BrdfGeometry;
@@ -120,7 +119,15 @@ public:
 
     /// Uploads a scene (meshes, textures, materials) and its lights.
     void setScene(const scene::Scene& scene);
-    LightBuffer& lights();
+
+    // The lights, as many as there are (setScene places the scene's). Changes apply from the
+    // next frame.
+    int lightCount() const;
+    const PlacedLight& light(int index) const; ///< index < lightCount()
+    /// Replaces all lights.
+    void setLights(const std::vector<PlacedLight>& lights);
+    /// Changes light `index` (< lightCount()), uploading only its bytes; returns what it uploaded.
+    LightWrite setLight(int index, const PlacedLight& light);
 
     /// Sets the environment for image-based lighting and the skybox, baking it (or reading the
     /// bake from `cacheDirectory` when it holds one for this content and these settings).

@@ -339,9 +339,9 @@ TEST_F(GlTest, LightGizmosAreDiscsOfTheLightColour)
     EXPECT_NEAR(0.5f * float(box.y0 + box.y1 + 1), at.y, 1.0f);
 
     // The gizmos follow edits to the light buffer.
-    render::PlacedLight moved = renderer.lights().light(0);
+    render::PlacedLight moved = renderer.light(0);
     moved.position = {-0.6f, -0.3f, 0.0f};
-    renderer.lights().set(0, moved);
+    renderer.setLight(0, moved);
     renderer.render(view, settings);
     const glm::vec2 movedAt = project(moved.position, view, 128, 128);
     EXPECT_NEAR(centrePixel(renderer.readRadiance(), int(movedAt.x), int(movedAt.y)).x, expected.x, expected.x * 2e-3f);
@@ -517,9 +517,9 @@ TEST_F(GlTest, LightGizmoRodsShowDirectionAndCone)
     EXPECT_LT(reach, rimReach + 2.0f);
 
     // Turning the light: the rod follows, and none is left along the old direction.
-    render::PlacedLight turned = renderer.lights().light(0);
+    render::PlacedLight turned = renderer.light(0);
     turned.direction = {0, 1, 0};
-    renderer.lights().set(0, turned);
+    renderer.setLight(0, turned);
     renderer.render(view, settings);
     const ImageFloat after = renderer.readRadiance();
     const glm::vec2 up = project(apex + glm::vec3(0, 1, 0) * spot.range, view, kW, kH);
@@ -529,7 +529,7 @@ TEST_F(GlTest, LightGizmoRodsShowDirectionAndCone)
     // A wider cone reaches further from the axis, as far as its own rim.
     turned.direction = direction;
     turned.light.outerConeAngle = glm::radians(45.0f);
-    renderer.lights().set(0, turned);
+    renderer.setLight(0, turned);
     renderer.render(view, settings);
     float widerRim = 0.0f;
     coneOutline(direction, turned.light.outerConeAngle, &widerRim);
@@ -540,7 +540,7 @@ TEST_F(GlTest, LightGizmoRodsShowDirectionAndCone)
     // The selected light's rod is wider: the radiance summed across the rod (its width in
     // pixels times the sprite's mean cover), averaged along it, grows by kGizmoSelectedScale.
     turned.light.outerConeAngle = spot.outerConeAngle;
-    renderer.lights().set(0, turned);
+    renderer.setLight(0, turned);
     auto across = [&](const ImageFloat& im) {
         float sum = 0.0f;
         for (float t = 0.55f; t <= 0.9f; t += 0.01f)

@@ -19,6 +19,7 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "render/Billboard.h"
+#include "render/LightBuffer.h"
 #include "shaders/shared/BillboardData.h"
 #include "shaders/shared/Bindings.h"
 
@@ -143,8 +144,19 @@ struct BillboardPass::Impl {
 
     // One storage buffer: [static: Opaque and Mask groups | dynamic: sorted blended + gizmos].
     gl::Buffer instances;
+    std::vector<shared::GpuBillboard> staticRecords; // kept to refill a grown buffer
     uint32_t dynamicFirst = 0;
     uint32_t dynamicCapacity = 0;
+
+    /// Makes the dynamic part hold at least `records` (a new buffer, its capacity doubled or
+    /// more, when it does not): there is no limit to the lights, so none to their gizmos.
+    void reserveDynamic(size_t records)
+    {
+        if (instances && records <= dynamicCapacity) return;
+        dynamicCapacity = uint32_t(std::max(records, 2 * size_t(dynamicCapacity)));
+        instances = gl::Buffer((size_t(dynamicFirst) + dynamicCapacity) * sizeof(shared::GpuBillboard), nullptr, "billboards");
+        instances.update(0, staticRecords.size() * sizeof(shared::GpuBillboard), staticRecords.data());
+    }
 
     Impl()
     {
@@ -309,7 +321,8 @@ void BillboardPass::setScene(const scene::Scene& scene)
     p.blendedGroup.clear();
     p.sceneBounds = scene.worldBounds();
 
-    std::vector<shared::GpuBillboard> staticRecords;
+    std::vector<shared::GpuBillboard>& staticRecords = p.staticRecords;
+    staticRecords.clear();
     for (const scene::BillboardGroup& group : scene.billboards) {
         GroupState g = Impl::describe(group, p.sprite(scene, group));
         if (group.alphaMode == scene::AlphaMode::Blend) {
@@ -328,11 +341,11 @@ void BillboardPass::setScene(const scene::Scene& scene)
     p.gizmoRods = Impl::describe(gizmos.rods, p.builtin(gizmos.rods.sprite));
 
     // The dynamic part holds the blended billboards and, separately after them, the gizmos of
-    // as many lights as the light buffer can hold.
+    // the scene's lights; drawBlended grows it when lights are added.
     p.dynamicFirst = uint32_t(staticRecords.size());
-    p.dynamicCapacity = uint32_t(p.blended.size()) + SPECULA_MAX_LIGHTS * kGizmoBillboardsPerLight;
-    p.instances = gl::Buffer((size_t(p.dynamicFirst) + p.dynamicCapacity) * sizeof(shared::GpuBillboard), nullptr, "billboards");
-    p.instances.update(0, staticRecords.size() * sizeof(shared::GpuBillboard), staticRecords.data());
+    p.dynamicCapacity = 0;
+    p.instances = {};
+    p.reserveDynamic(p.blended.size() + scene.lightInstances().size() * size_t(kGizmoBillboardsPerLight));
     log::debug("billboards: {} groups, {} static and {} blended billboards", p.groups.size(), staticRecords.size(), p.blended.size());
 }
 
@@ -363,6 +376,11 @@ size_t BillboardPass::drawBlended(gl::State& state, const View& view, int viewpo
     Impl& p = *mImpl;
     const bool gizmos = gizmoLights && gizmoLights->count() > 0;
     if (!p.instances || (p.blended.empty() && !gizmos)) return 0; // no scene yet, or nothing to draw
+    LightGizmos made;
+    if (gizmos) {
+        made = makeLightGizmos(gizmoLights->all(), p.sceneBounds, selectedLight);
+        p.reserveDynamic(p.blended.size() + made.rods.billboards.size() + made.discs.billboards.size()); // before begin() binds it
+    }
     gl::DebugGroup debugGroup("billboards (blended)");
     p.begin(state, doomIndexed);
     // A Doom frame's indices cannot be blended: the shader cuts these out at half coverage,
@@ -376,10 +394,6 @@ size_t BillboardPass::drawBlended(gl::State& state, const View& view, int viewpo
         triangles += p.drawSorted(state, view, viewportHeight, p.blended, groupOf, 0);
     }
     if (gizmos) {
-        std::vector<PlacedLight> lights;
-        const int count = std::min(gizmoLights->count(), int(SPECULA_MAX_LIGHTS));
-        for (int i = 0; i < count; ++i) lights.push_back(gizmoLights->light(i));
-        const LightGizmos made = makeLightGizmos(lights, p.sceneBounds, selectedLight);
         // Gizmos mark where lights are, so they show through walls and lamp shades: no depth
         // test. Rods first, so that every disc sits on top of the rods leaving it.
         state.apply({.noDepthTest = true, .noDepthWrite = true, .cull = gl::CullMode::None, .blend = blend});

@@ -20,7 +20,7 @@
 #include <memory>
 #include <vector>
 
-#include "render/LightBuffer.h"
+#include "render/PlacedLight.h"
 #include "render/View.h"
 #include "scene/Scene.h"
 
@@ -29,6 +29,8 @@ class State;
 }
 
 namespace specula::render {
+
+class LightBuffer;
 
 /// Light gizmos: a disc of this many pixels across, emitting the light's colour × this radiance
 /// (cd/m²; bright enough to read as a light and to bloom, whatever the light's intensity).
