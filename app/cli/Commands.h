@@ -1,14 +1,14 @@
 #pragma once
 #include <string>
 
-#include "SceneSetup.h"
+#include "setup/SceneSetup.h"
 
 namespace specula::cli {
 
 struct RenderArgs {
     std::string scene;
     std::string output = "out.png";
-    FrameOptions frame;
+    setup::FrameOptions frame;
     bool stats = false; ///< print the GPU time of each pass (median of kStatsFrames more frames)
 };
 
@@ -19,7 +19,7 @@ struct BenchArgs {
     std::string output = "bench.json";
     int frames = 60;
     int warmup = 5;
-    FrameOptions frame;
+    setup::FrameOptions frame;
 };
 
 struct BakeArgs {
@@ -34,7 +34,7 @@ struct GalleryArgs {
     std::string output = "gallery.png";
     bool variants = false;
     int columns = 3;
-    FrameOptions frame;
+    setup::FrameOptions frame;
 };
 
 int runRender(const RenderArgs& args);

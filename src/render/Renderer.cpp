@@ -22,6 +22,7 @@
 #include "gl/VertexArray.h"
 #include "render/BillboardPass.h"
 #include "render/BloomPass.h"
+#include "render/CameraExposure.h"
 #include "render/DoomPass.h"
 #include "render/ExposurePass.h"
 #include "render/Frustum.h"

@@ -11,10 +11,11 @@
 
 #include "core/ImageIO.h"
 #include "render/ImageBasedLighting.h"
-#include "render/PostSettings.h"
 #include "render/Tonemap.h"
 #include "render/View.h"
 #include "scene/Scene.h"
+#include "settings/DebugView.h"
+#include "settings/PassSettings.h"
 
 namespace specula::gl {
 class State;
@@ -82,7 +83,7 @@ struct FrameSettings {
     /// then × 2^exposureEv as compensation. Unset: no camera, only 2^exposureEv. Ignored while
     /// autoExposure is on (it measures its own EV100). See docs/units.md.
     std::optional<float> ev100;
-    // Post-processing (render/PostSettings.h): each off by default and then free.
+    // Post-processing (settings/PassSettings.h): each off by default and then free.
     BloomSettings bloom;
     SsaoSettings ssao;
     AutoExposureSettings autoExposure;

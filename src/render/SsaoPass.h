@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render/PostSettings.h"
+#include "settings/PassSettings.h"
 #include "render/View.h"
 
 namespace specula::gl {
