@@ -1,14 +1,14 @@
 #pragma once
 #include <string>
 
-#include "SceneSetup.h"
+#include "setup/SceneSetup.h"
 
 namespace specula::cli {
 
 struct RenderArgs {
     std::string scene;
     std::string output = "out.png";
-    FrameOptions frame;
+    setup::FrameOptions frame;
     bool stats = false; ///< print the GPU time of each pass (median of kStatsFrames more frames)
     std::string printGraph; ///< write the frame's graph of passes as Graphviz dot here ("-": stdout)
 };
@@ -20,7 +20,7 @@ struct BenchArgs {
     std::string output = "bench.json";
     int frames = 60;
     int warmup = 5;
-    FrameOptions frame;
+    setup::FrameOptions frame;
 };
 
 struct BakeArgs {
@@ -35,7 +35,7 @@ struct GalleryArgs {
     std::string output = "gallery.png";
     bool variants = false;
     int columns = 3;
-    FrameOptions frame;
+    setup::FrameOptions frame;
 };
 
 int runRender(const RenderArgs& args);

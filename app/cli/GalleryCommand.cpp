@@ -33,24 +33,24 @@ int runGallery(const GalleryArgs& args)
 {
     const std::filesystem::path output = args.output;
     checkOutputPath(output);
-    scene::SceneDocument document = loadSceneOrBuiltin(args.scene);
-    FrameOptions options = args.frame;
+    scene::SceneDocument document = setup::loadSceneOrBuiltin(args.scene);
+    setup::FrameOptions options = args.frame;
     // Tiles, not full frames: small by default.
     if (!options.width) options.width = 480;
     if (!options.height) options.height = 320;
-    const render::FrameSettings base = resolveSettings(document, options);
-    const std::optional<render::EnvironmentMap> environment = loadEnvironment(document, options);
+    const render::FrameSettings base = setup::resolveSettings(document, options);
+    const std::optional<render::EnvironmentMap> environment = setup::loadEnvironment(document, options);
     // A scene without lights gets the default rig even under an environment (which `render`
     // would light it with alone): the classic models take no specular light from an
     // environment, and without a light their tiles would all show the same ambient term.
-    const render::View view = prepareView(document, options, base, nullptr, /*hasEnvironment=*/false);
+    const render::View view = setup::prepareView(document, options, base, nullptr, /*hasEnvironment=*/false);
 
     auto context = platform::Context::createHeadless();
     gl::DebugMonitor debug;
     render::Renderer renderer;
-    renderer.setCacheDirectory(cacheDirectory(options));
+    renderer.setCacheDirectory(setup::cacheDirectory(options));
     renderer.setScene(document.scene);
-    if (environment) renderer.setEnvironment(*environment, resolveBakeSettings(options), cacheDirectory(options));
+    if (environment) renderer.setEnvironment(*environment, setup::resolveBakeSettings(options), setup::cacheDirectory(options));
 
     std::vector<render::SheetTile> tiles;
     auto shoot = [&](std::string label, const scene::MaterialShading& shading) {

@@ -1,11 +1,7 @@
 #pragma once
-// Command-line options of the post-processing passes, shared by `render` and `bench`, and how
-// they combine with a scene file's "post" object and camera exposure.
-#include <optional>
-#include <string>
-
-#include "render/Renderer.h"
-#include "scene/SceneFile.h"
+// Command-line flags of the post-processing passes, shared by every rendering command: one
+// flag per row of each pass's table (settings/PassSettings.h), and --ev100.
+#include "setup/SceneSetup.h"
 
 namespace CLI {
 class App;
@@ -13,22 +9,8 @@ class App;
 
 namespace specula::cli {
 
-/// Unset options come from the scene file, then from the defaults (render/PostSettings.h).
-struct PostOptions {
-    std::optional<std::string> bloom, ssao, fxaa, autoExposure; ///< on | off
-    std::optional<float> bloomIntensity, bloomRadius, bloomThreshold, bloomKnee;
-    std::optional<int> bloomLevels;
-    std::optional<std::string> bloomFireflyFilter; ///< on | off
-    std::optional<float> ssaoRadius, ssaoBias, ssaoPower;
-    std::optional<int> ssaoSamples;
-    std::optional<float> ev100;
-};
-
-void addPostOptions(CLI::App* command, PostOptions& options);
-
-/// Fills the post-processing part of `settings` (passes, their parameters, camera EV100):
-/// command line over scene file over defaults. Throws Error on bad values. (--debug-view,
-/// shared with the material views, is parsed with the other frame options.)
-void resolvePostSettings(const scene::SceneDocument& document, const PostOptions& options, render::FrameSettings& settings);
+/// Adds --bloom, --bloom-intensity, ... (each table's command-line fields) and --ev100; their
+/// values land in options.post and options.ev100, and setup::resolveSettings checks them.
+void addPostOptions(CLI::App* command, setup::FrameOptions& options);
 
 } // namespace specula::cli

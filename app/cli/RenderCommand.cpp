@@ -21,12 +21,12 @@ int runRender(const RenderArgs& args)
     checkOutputPath(output); // before any long work
 
     Stopwatch load;
-    scene::SceneDocument document = loadSceneOrBuiltin(args.scene);
-    const render::FrameSettings settings = resolveSettings(document, args.frame);
-    const std::optional<render::EnvironmentMap> environment = loadEnvironment(document, args.frame);
-    const render::BakeSettings bake = resolveBakeSettings(args.frame);
+    scene::SceneDocument document = setup::loadSceneOrBuiltin(args.scene);
+    const render::FrameSettings settings = setup::resolveSettings(document, args.frame);
+    const std::optional<render::EnvironmentMap> environment = setup::loadEnvironment(document, args.frame);
+    const render::BakeSettings bake = setup::resolveBakeSettings(args.frame);
     int defaultLights = 0;
-    const render::View view = prepareView(document, args.frame, settings, &defaultLights, environment.has_value());
+    const render::View view = setup::prepareView(document, args.frame, settings, &defaultLights, environment.has_value());
     log::info("loaded {} in {:.0f} ms: {} meshes, {} triangles, {} lights{}", args.scene.empty() ? "demo" : args.scene,
               load.elapsedMs(), document.scene.meshes.size(), document.scene.triangleCount(), document.scene.lights.size(),
               defaultLights ? " (default rig)" : "");
@@ -34,9 +34,9 @@ int runRender(const RenderArgs& args)
     auto context = platform::Context::createHeadless();
     gl::DebugMonitor debug;
     render::Renderer renderer;
-    renderer.setCacheDirectory(cacheDirectory(args.frame));
+    renderer.setCacheDirectory(setup::cacheDirectory(args.frame));
     renderer.setScene(document.scene);
-    if (environment) renderer.setEnvironment(*environment, bake, cacheDirectory(args.frame));
+    if (environment) renderer.setEnvironment(*environment, bake, setup::cacheDirectory(args.frame));
     if (!args.printGraph.empty()) {
         const std::string dot = renderer.frameGraphDot(view, settings);
         if (args.printGraph == "-") {
@@ -62,7 +62,7 @@ int runRender(const RenderArgs& args)
     }
     // A Doom frame renders one sample a pixel, with no tone curve, whatever was asked for.
     const bool doomFrame =
-        settings.materialOverride.model == scene::ShadingModel::Doom && settings.debugView == render::DebugView::None;
+        settings.materialOverride.model == scene::ShadingModel::Doom && settings.debugView == DebugView::None;
     const int samples = doomFrame ? 1 : settings.msaa;
     if (doomFrame)
         log::info("first frame {:.0f} ms after start; wrote {} ({}x{}, Doom's 8-bit frame: palette colours only)", firstFrameMs,

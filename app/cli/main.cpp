@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "Commands.h"
+#include "PostOptions.h"
 #include "app/viewer/ViewCommand.h"
 #include "core/Error.h"
 #include "core/Log.h"
@@ -13,7 +14,7 @@ using namespace specula;
 
 namespace {
 
-void addFrameOptions(CLI::App* command, cli::FrameOptions& frame)
+void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
 {
     command->add_option("--width", frame.width, "image width in pixels (default 1280)");
     command->add_option("--height", frame.height, "image height in pixels (default 720)");
@@ -39,7 +40,7 @@ void addFrameOptions(CLI::App* command, cli::FrameOptions& frame)
                         "multiple-scattering compensation of the specular lobe: on (default) or off (exactly the glTF BRDF)");
     command->add_flag("--no-cache", frame.noCache, "bake the environment even if the bake cache holds it, and do not cache");
     command->add_flag("--gizmos", frame.gizmos, "draw every light as a disc in the light's colour");
-    cli::addPostOptions(command, frame.post);
+    cli::addPostOptions(command, frame);
 }
 
 } // namespace

@@ -37,10 +37,10 @@ std::vector<render::PlacedLight> currentLights(const render::Renderer& renderer)
 
 } // namespace
 
-Viewer::Viewer(platform::Context& context, const cli::FrameOptions& options)
+Viewer::Viewer(platform::Context& context, const setup::FrameOptions& options)
     : mContext(context), mOptions(options), mRenderer(std::make_unique<render::Renderer>()), mShaderWatcher(gl::shaderRoot())
 {
-    mRenderer->setCacheDirectory(cli::cacheDirectory(mOptions));
+    mRenderer->setCacheDirectory(setup::cacheDirectory(mOptions));
 }
 
 Viewer::~Viewer() = default;
@@ -49,13 +49,13 @@ void Viewer::loadScene(const std::string& name)
 {
     Stopwatch load;
     const bool first = mSceneName.empty();
-    scene::SceneDocument document = cli::loadSceneOrBuiltin(name);
-    render::FrameSettings settings = cli::resolveSettings(document, mOptions);
+    scene::SceneDocument document = setup::loadSceneOrBuiltin(name);
+    render::FrameSettings settings = setup::resolveSettings(document, mOptions);
     // The first scene brings its environment (or the command line's); a dropped scene keeps
     // the one on screen.
-    std::optional<render::EnvironmentMap> environment = first ? cli::loadEnvironment(document, mOptions) : mEnvironment;
+    std::optional<render::EnvironmentMap> environment = first ? setup::loadEnvironment(document, mOptions) : mEnvironment;
     int defaultLights = 0;
-    cli::prepareView(document, mOptions, settings, &defaultLights, environment.has_value());
+    setup::prepareView(document, mOptions, settings, &defaultLights, environment.has_value());
     mStartup.sceneLoad = load.elapsedMs();
     log::info("loaded {} in {:.0f} ms: {} meshes, {} triangles, {} lights{}", name.empty() ? "demo" : name, mStartup.sceneLoad,
               document.scene.meshes.size(), document.scene.triangleCount(), document.scene.lights.size(),
@@ -67,7 +67,7 @@ void Viewer::loadScene(const std::string& name)
         mSettings = settings;
         if (environment) {
             Stopwatch bake;
-            mRenderer->setEnvironment(*environment, cli::resolveBakeSettings(mOptions), cli::cacheDirectory(mOptions));
+            mRenderer->setEnvironment(*environment, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions));
             mStartup.environmentBake = bake.elapsedMs();
             mEnvironmentName = mOptions.env.value_or(document.environment.file.empty() ? "sky" : document.environment.file);
         }
@@ -86,7 +86,7 @@ void Viewer::loadEnvironment(const std::string& file)
 {
     render::EnvironmentMap map = file == "sky" ? render::proceduralSky() : render::loadEnvironmentMap(file);
     Stopwatch bake;
-    mRenderer->setEnvironment(map, cli::resolveBakeSettings(mOptions), cli::cacheDirectory(mOptions));
+    mRenderer->setEnvironment(map, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions));
     log::info("environment {} ready in {:.0f} ms", file, bake.elapsedMs());
     mEnvironment = std::move(map);
     mEnvironmentName = file;
@@ -187,7 +187,7 @@ bool Viewer::reloadShaders()
     const int errorsBefore = mDebug ? mDebug->errorCount() : 0;
     try {
         auto fresh = std::make_unique<render::Renderer>();
-        fresh->setCacheDirectory(cli::cacheDirectory(mOptions));
+        fresh->setCacheDirectory(setup::cacheDirectory(mOptions));
         fresh->setScene(mDocument.scene);
         fresh->setLights(currentLights(*mRenderer));
         // Every material's edits, from the records the old renderer draws with: the default
@@ -199,7 +199,7 @@ bool Viewer::reloadShaders()
                 fresh->setMaterialParameter(i, parameter, mRenderer->materialParameter(i, parameter));
             }
         }
-        if (mEnvironment) fresh->setEnvironment(*mEnvironment, cli::resolveBakeSettings(mOptions), cli::cacheDirectory(mOptions));
+        if (mEnvironment) fresh->setEnvironment(*mEnvironment, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions));
         fresh->prepare(mSettings);
         mRenderer = std::move(fresh);
         lastError.clear();

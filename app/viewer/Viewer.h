@@ -11,7 +11,8 @@
 
 #include "OrbitCamera.h"
 #include "ShaderWatcher.h"
-#include "app/cli/SceneSetup.h"
+#include "render/PlacedLight.h"
+#include "setup/SceneSetup.h"
 #include "render/Renderer.h"
 
 namespace specula::gl {
@@ -44,7 +45,7 @@ struct LightUpload {
 
 class Viewer {
 public:
-    Viewer(platform::Context& context, const cli::FrameOptions& options);
+    Viewer(platform::Context& context, const setup::FrameOptions& options);
     ~Viewer();
 
     // Files. A failed load throws specula::Error and leaves the current scene or environment.
@@ -127,7 +128,7 @@ public:
 private:
     void uploadScene();
     platform::Context& mContext;
-    cli::FrameOptions mOptions;
+    setup::FrameOptions mOptions;
     std::unique_ptr<render::Renderer> mRenderer;
     scene::SceneDocument mDocument;
     std::optional<render::EnvironmentMap> mEnvironment;

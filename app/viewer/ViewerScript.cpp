@@ -4,13 +4,17 @@
 #include <GLFW/glfw3.h>
 
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
 #include "Viewer.h"
 #include "core/Error.h"
 #include "core/Log.h"
 #include "platform/Context.h"
+#include "settings/PassSettings.h"
 
 namespace specula::viewer {
 
@@ -51,13 +55,22 @@ private:
     std::vector<std::string> mWords;
 };
 
+/// A pass's switch by its flag's name ("bloom", "auto-exposure": settings/PassSettings.h).
+bool* passSwitch(render::FrameSettings& s, const std::string& name)
+{
+    bool* target = nullptr;
+    forEachPass(
+        [&](auto& pass) {
+            if (flagName(settingsTable<std::decay_t<decltype(pass)>>().key, "enabled") == name) target = &pass.enabled;
+        },
+        s);
+    return target;
+}
+
 bool* toggleTarget(Viewer& viewer, const std::string& name)
 {
     render::FrameSettings& s = viewer.settings();
-    if (name == "bloom") return &s.bloom.enabled;
-    if (name == "ssao") return &s.ssao.enabled;
-    if (name == "fxaa") return &s.fxaa.enabled;
-    if (name == "auto-exposure") return &s.autoExposure.enabled;
+    if (bool* pass = passSwitch(s, name)) return pass;
     if (name == "skybox") return &s.environment.skybox;
     if (name == "ibl") return &s.environment.lighting;
     if (name == "gizmos") return &s.gizmos;
@@ -67,18 +80,40 @@ bool* toggleTarget(Viewer& viewer, const std::string& name)
     return nullptr;
 }
 
-float* valueTarget(Viewer& viewer, const std::string& name)
+/// "bloom, ssao, fxaa, auto-exposure, skybox, ...": what `toggle` takes.
+std::string toggleNames()
+{
+    std::string names;
+    render::FrameSettings s;
+    forEachPass([&](auto& pass) { names += flagName(settingsTable<std::decay_t<decltype(pass)>>().key, "enabled") + ", "; }, s);
+    return names + "skybox, ibl, gizmos, energy-compensation, ui, fly";
+}
+
+/// What `set NAME` writes: a frame value, or any number of a pass by its flag's name
+/// ("bloom-intensity", "ssao-samples"). Empty when there is none.
+std::function<void(float)> valueTarget(Viewer& viewer, const std::string& name)
 {
     render::FrameSettings& s = viewer.settings();
-    if (name == "exposure") return &s.exposureEv;
-    if (name == "bloom-intensity") return &s.bloom.intensity;
-    if (name == "bloom-radius") return &s.bloom.radius;
-    if (name == "bloom-threshold") return &s.bloom.threshold;
-    if (name == "env-intensity") return &s.environment.intensity;
-    if (name == "env-rotation") return &s.environment.rotationDegrees;
-    if (name == "skybox-blur") return &s.environment.skyboxBlur;
-    if (name == "ssao-radius") return &s.ssao.radius;
-    return nullptr;
+    auto number = [](float& target) { return [&target](float value) { target = value; }; };
+    if (name == "exposure") return number(s.exposureEv);
+    if (name == "env-intensity") return number(s.environment.intensity);
+    if (name == "env-rotation") return number(s.environment.rotationDegrees);
+    if (name == "skybox-blur") return number(s.environment.skyboxBlur);
+    std::function<void(float)> target;
+    forEachPass(
+        [&](auto& pass) {
+            using T = std::decay_t<decltype(pass)>;
+            const SettingField<T>* field = settingsTable<T>().findFlag(name);
+            if (!field || field->kind() == SettingKind::Bool) return;
+            std::visit(
+                [&](auto member) {
+                    using V = SettingValue<decltype(member)>;
+                    if constexpr (!std::is_same_v<V, bool>) target = [&pass, member](float value) { pass.*member = V(value); };
+                },
+                field->member);
+        },
+        s);
+    return target;
 }
 
 render::PlacedLight lightAt(Viewer& viewer, int index)
@@ -233,14 +268,14 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
     // Frame settings.
     if (a == "toggle") {
         bool* flag = toggleTarget(viewer, w.text(1));
-        if (!flag) throw Error("cannot toggle '{}' (bloom, ssao, fxaa, auto-exposure, skybox, ibl, gizmos, energy-compensation, ui, fly)", w.text(1));
+        if (!flag) throw Error("cannot toggle '{}' ({})", w.text(1), toggleNames());
         *flag = !*flag;
         return 0;
     }
     if (a == "set") {
-        float* value = valueTarget(viewer, w.text(1));
-        if (!value) throw Error("cannot set '{}'", w.text(1));
-        *value = w.number(2);
+        const std::function<void(float)> set = valueTarget(viewer, w.text(1));
+        if (!set) throw Error("cannot set '{}'", w.text(1));
+        set(w.number(2));
         return 0;
     }
     if (a == "tonemap") {
@@ -250,7 +285,7 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         return 0;
     }
     if (a == "debug-view") {
-        const auto view = render::parseDebugView(w.text(1));
+        const auto view = parseDebugView(w.text(1));
         if (!view) throw Error("unknown debug view '{}'", w.text(1));
         viewer.settings().debugView = *view;
         return 0;

@@ -11,11 +11,15 @@
 #include <ctime>
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
 
 #include "Viewer.h"
 #include "core/Error.h"
 #include "render/BrdfPlot.h"
 #include "render/ShadingVariant.h"
+#include "settings/PassSettings.h"
 
 namespace specula::viewer {
 
@@ -337,6 +341,57 @@ void environmentPanel(Viewer& viewer)
     ImGui::SliderFloat("skybox blur", &e.skyboxBlur, 0.0f, 1.0f);
 }
 
+/// One widget for each row of a pass's table, over the table's slider range; an edit the
+/// command line or the scene file would reject (out of range, out of order) is not taken.
+/// A pass with only its switch (FXAA) is one checkbox, any other a tree (`open`: at first).
+template <typename T>
+void passWidgets(T& settings, bool open)
+{
+    const SettingsTable<T>& table = settingsTable<T>();
+    ImGui::PushID(table.key);
+    if (table.fields.size() == 1) {
+        ImGui::Checkbox(table.title, &settings.enabled);
+        ImGui::PopID();
+        return;
+    }
+    if (!ImGui::TreeNodeEx(table.title, open ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+        ImGui::PopID();
+        return;
+    }
+    for (const SettingField<T>& field : table.fields) {
+        const std::string label = *field.label ? field.label : words(field.name);
+        SettingRange slider = field.sliderRange();
+        // An order keeps each end of a pair on its side of the other (as ImGui's range widgets do).
+        for (const SettingOrder<T>& order : table.orders) {
+            if (order.upper == field.member) slider.min = std::max(slider.min, table.find(order.lower)->value(settings));
+            if (order.lower == field.member) slider.max = std::min(slider.max, table.find(order.upper)->value(settings));
+        }
+        std::visit(
+            [&](auto member) {
+                using V = SettingValue<decltype(member)>;
+                V& value = settings.*member;
+                V edited = value;
+                bool changed = false;
+                if constexpr (std::is_same_v<V, bool>) {
+                    changed = ImGui::Checkbox(label.c_str(), &edited);
+                } else if constexpr (std::is_same_v<V, int>) {
+                    changed = ImGui::SliderInt(label.c_str(), &edited, int(slider.min), int(slider.max));
+                } else {
+                    changed = ImGui::SliderFloat(label.c_str(), &edited, float(slider.min), float(slider.max));
+                }
+                if (!changed || !field.range.contains(double(edited))) return;
+                const V before = std::exchange(value, edited);
+                for (const SettingOrder<T>& order : table.orders) {
+                    const bool mine = order.lower == field.member || order.upper == field.member;
+                    if (mine && !(table.find(order.lower)->value(settings) < table.find(order.upper)->value(settings))) value = before;
+                }
+            },
+            field.member);
+    }
+    ImGui::TreePop();
+    ImGui::PopID();
+}
+
 void postPanel(Viewer& viewer)
 {
     if (!panelHeader(viewer, "Post-processing", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -355,39 +410,13 @@ void postPanel(Viewer& viewer)
         if (ImGui::Combo("MSAA samples", &index, "1\0" "2\0" "4\0" "8\0")) s.msaa = kSamples[index];
     }
     ImGui::Checkbox("energy compensation", &s.energyCompensation);
-    if (ImGui::TreeNodeEx("bloom", ImGuiTreeNodeFlags_DefaultOpen)) {
-        ImGui::Checkbox("enabled##bloom", &s.bloom.enabled);
-        ImGui::SliderFloat("intensity##bloom", &s.bloom.intensity, 0.0f, 1.0f);
-        ImGui::SliderInt("levels", &s.bloom.levels, 1, 8);
-        ImGui::SliderFloat("radius##bloom", &s.bloom.radius, 0.1f, 4.0f);
-        ImGui::DragFloat("threshold", &s.bloom.threshold, 0.01f, 0.0f, 100.0f);
-        ImGui::SliderFloat("knee", &s.bloom.knee, 0.0f, 1.0f);
-        ImGui::Checkbox("firefly filter", &s.bloom.fireflyFilter);
-        ImGui::TreePop();
-    }
-    if (ImGui::TreeNode("SSAO")) {
-        ImGui::Checkbox("enabled##ssao", &s.ssao.enabled);
-        ImGui::SliderFloat("radius (m)", &s.ssao.radius, 0.01f, 5.0f);
-        ImGui::SliderFloat("bias (m)", &s.ssao.bias, 0.0f, 0.2f);
-        ImGui::SliderFloat("power", &s.ssao.power, 0.1f, 4.0f);
-        ImGui::SliderInt("samples##ssao", &s.ssao.samples, 1, 64);
-        ImGui::TreePop();
-    }
-    if (ImGui::TreeNode("auto exposure")) {
-        ImGui::Checkbox("enabled##ae", &s.autoExposure.enabled);
-        ImGui::DragFloatRange2("EV100 range", &s.autoExposure.minEv100, &s.autoExposure.maxEv100, 0.1f, -10.0f, 20.0f);
-        ImGui::SliderFloat("low percentile", &s.autoExposure.lowPercentile, 0.0f, 0.5f);
-        ImGui::SliderFloat("high percentile", &s.autoExposure.highPercentile, 0.5f, 1.0f);
-        ImGui::DragFloat("speed up (1/s)", &s.autoExposure.speedUp, 0.05f, 0.0f, 20.0f);
-        ImGui::DragFloat("speed down (1/s)", &s.autoExposure.speedDown, 0.05f, 0.0f, 20.0f);
-        ImGui::TreePop();
-    }
-    ImGui::Checkbox("FXAA", &s.fxaa.enabled);
-    if (ImGui::BeginCombo("debug view", render::debugViewName(s.debugView))) {
+    bool first = true;
+    forEachPass([&](auto& pass) { passWidgets(pass, std::exchange(first, false)); }, s);
+    if (ImGui::BeginCombo("debug view", debugViewName(s.debugView))) {
         // Every view up to the last one (BrdfF), material inputs and BRDF terms included.
-        for (int k = 0; k <= int(render::DebugView::BrdfF); ++k) {
-            const auto d = render::DebugView(k);
-            if (ImGui::Selectable(render::debugViewName(d), d == s.debugView)) s.debugView = d;
+        for (int k = 0; k <= int(DebugView::BrdfF); ++k) {
+            const auto d = DebugView(k);
+            if (ImGui::Selectable(debugViewName(d), d == s.debugView)) s.debugView = d;
         }
         ImGui::EndCombo();
     }

@@ -8,6 +8,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/Info.h"
 #include "gl/TimerQuery.h"
+#include "render/CameraExposure.h"
 #include "render/FrameContext.h"
 #include "render/GpuScene.h"
 #include "render/graph/GlGraphBackend.h"

@@ -13,10 +13,12 @@
 #include "core/ImageIO.h"
 #include "render/ImageBasedLighting.h"
 #include "render/PlacedLight.h"
-#include "render/PostSettings.h"
+#include "settings/PassSettings.h"
 #include "render/Tonemap.h"
 #include "render/View.h"
 #include "scene/Scene.h"
+#include "settings/DebugView.h"
+#include "settings/PassSettings.h"
 
 namespace specula::render {
 
@@ -78,7 +80,7 @@ struct FrameSettings {
     /// then × 2^exposureEv as compensation. Unset: no camera, only 2^exposureEv. Ignored while
     /// autoExposure is on (it measures its own EV100). See docs/units.md.
     std::optional<float> ev100;
-    // Post-processing (render/PostSettings.h): each off by default and then free.
+    // Post-processing (settings/PassSettings.h): each off by default and then free.
     BloomSettings bloom;
     SsaoSettings ssao;
     AutoExposureSettings autoExposure;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "render/PostSettings.h"
+#include "settings/DebugView.h"
 #include "render/ShadingVariant.h"
 
 namespace specula::render {

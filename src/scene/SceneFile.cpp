@@ -4,11 +4,14 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <climits>
 #include <cstdint>
 #include <fstream>
 #include <random>
 #include <set>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -692,58 +695,67 @@ std::optional<RenderSettings::CameraExposure> parseCameraExposure(const Object& 
                                           *object.nonNegative("iso", true)};
 }
 
-/// "post": each pass is `true`/`false` or an object of its parameters (enabled unless it says
-/// "enabled": false).
-PostFileSettings parsePost(const Object& object)
+/// One pass of "post" by its table (settings/PassSettings.h): `true`/`false`, or an object of
+/// the table's fields (enabled unless it says "enabled": false). Fields are checked in the
+/// table's order, an order between two fields (minEv100 < maxEv100) once both are read.
+template <typename T>
+void parsePass(const Object& post, const SettingsTable<T>& table, SettingsOverride<T>& out)
 {
-    PostFileSettings post;
-    // `pass` as a boolean, or as an object with `keys` (parsed by `parse`).
-    auto pass = [&](std::string_view key, std::vector<std::string_view> keys, std::optional<bool>& enabled, auto&& parse) {
-        if (!object.has(key)) return;
-        if (object.at(key).is_boolean()) {
-            enabled = object.boolean(key);
-            return;
+    const std::string_view key = table.key;
+    if (!post.has(key)) return;
+    if (post.at(key).is_boolean()) {
+        out.set(&T::enabled, *post.boolean(key));
+        return;
+    }
+    if (!post.at(key).is_object()) post.fail(key, "must be true, false or an object");
+    std::vector<std::string_view> keys;
+    for (const SettingField<T>& field : table.fields)
+        if (std::string_view(field.name) != "enabled") keys.emplace_back(field.name);
+    keys.emplace_back("enabled");
+    const Object settings = *post.object(key, std::move(keys));
+    out.set(&T::enabled, settings.boolean("enabled").value_or(true));
+    const T& defaults = settingDefaults<T>();
+    for (const SettingField<T>& field : table.fields) {
+        if (std::string_view(field.name) == "enabled") continue;
+        const SettingRange& range = field.range;
+        std::visit(
+            [&](auto member) {
+                using V = SettingValue<decltype(member)>;
+                std::optional<V> value;
+                if constexpr (std::is_same_v<V, bool>) {
+                    value = settings.boolean(field.name);
+                } else if constexpr (std::is_same_v<V, int>) {
+                    // A bounded range in Object::integer's words; any other checked after.
+                    const bool bounded = range.bounded();
+                    value = settings.integer(field.name, bounded ? int(range.min) : INT_MIN, bounded ? int(range.max) : INT_MAX);
+                    if (value && !range.contains(*value)) settings.fail(field.name, range.requirement());
+                } else {
+                    value = settings.number(field.name);
+                    if (value && !range.contains(*value)) settings.fail(field.name, range.requirement());
+                }
+                if (value) out.set(member, *value);
+            },
+            field.member);
+        for (const SettingOrder<T>& order : table.orders) {
+            const SettingField<T>* lower = table.find(order.lower);
+            const SettingField<T>* upper = table.find(order.upper);
+            if (std::max(lower, upper) != &field) continue;
+            // The file's values over the defaults: one end given alone is judged against the other's default.
+            T given = defaults;
+            out.applyTo(given);
+            if (lower->value(given) >= upper->value(given))
+                settings.fail(lower->name, fmt::format("must be less than {} (defaults {} and {})", upper->name,
+                                                       formatSetting(lower->kind(), lower->value(defaults)),
+                                                       formatSetting(upper->kind(), upper->value(defaults))));
         }
-        if (!object.at(key).is_object()) object.fail(key, "must be true, false or an object");
-        keys.push_back("enabled");
-        const Object settings = *object.object(key, std::move(keys));
-        enabled = settings.boolean("enabled").value_or(true);
-        parse(settings);
-    };
-    auto range = [](const Object& o, std::string_view key, float min, float max) {
-        const auto value = o.number(key);
-        if (value && !(*value >= min && *value <= max)) o.fail(key, fmt::format("must be between {} and {}", min, max));
-        return value;
-    };
-    pass("bloom", {"intensity", "levels", "radius", "threshold", "knee", "fireflyFilter"}, post.bloom.enabled, [&](const Object& o) {
-        post.bloom.intensity = o.nonNegative("intensity");
-        post.bloom.levels = o.integer("levels", 1, 8);
-        post.bloom.radius = o.nonNegative("radius", true);
-        post.bloom.threshold = o.nonNegative("threshold");
-        post.bloom.knee = range(o, "knee", 0.0f, 1.0f);
-        post.bloom.fireflyFilter = o.boolean("fireflyFilter");
-    });
-    pass("ssao", {"radius", "bias", "power", "samples"}, post.ssao.enabled, [&](const Object& o) {
-        post.ssao.radius = o.nonNegative("radius", true);
-        post.ssao.bias = o.nonNegative("bias");
-        post.ssao.power = o.nonNegative("power", true);
-        post.ssao.samples = o.integer("samples", 1, 64);
-    });
-    pass("autoExposure", {"minEv100", "maxEv100", "lowPercentile", "highPercentile", "speedUp", "speedDown"},
-         post.autoExposure.enabled, [&](const Object& o) {
-             auto& a = post.autoExposure;
-             a.minEv100 = o.number("minEv100");
-             a.maxEv100 = o.number("maxEv100");
-             if (a.minEv100.value_or(-6.0f) >= a.maxEv100.value_or(18.0f))
-                 o.fail("minEv100", "must be less than maxEv100 (defaults -6 and 18)");
-             a.lowPercentile = o.unitInterval("lowPercentile");
-             a.highPercentile = o.unitInterval("highPercentile");
-             if (a.lowPercentile.value_or(0.1f) >= a.highPercentile.value_or(0.95f))
-                 o.fail("lowPercentile", "must be less than highPercentile (defaults 0.1 and 0.95)");
-             a.speedUp = o.nonNegative("speedUp");
-             a.speedDown = o.nonNegative("speedDown");
-         });
-    pass("fxaa", {}, post.fxaa, [](const Object&) {});
+    }
+}
+
+/// "post": each pass by its table.
+PostOverrides parsePost(const Object& object)
+{
+    PostOverrides post;
+    forEachPass([&](auto& pass) { parsePass(object, settingsTable<typename std::decay_t<decltype(pass)>::Settings>(), pass); }, post);
     return post;
 }
 
@@ -855,7 +867,10 @@ SceneDocument loadSceneFile(const fs::path& path)
         if (document.render.ev100 && cameraExposure)
             render->fail("ev100", "and the camera's aperture, shutter and iso both set the exposure; give one");
     }
-    if (const auto post = root.object("post", {"bloom", "ssao", "autoExposure", "fxaa"})) document.post = parsePost(*post);
+    std::vector<std::string_view> passes;
+    forEachPass([&](auto& pass) { passes.emplace_back(settingsTable<typename std::decay_t<decltype(pass)>::Settings>().key); },
+                document.post);
+    if (const auto post = root.object("post", passes)) document.post = parsePost(*post);
     return document;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scene/Scene.h"
+#include "settings/PassSettings.h"
 
 namespace specula::scene {
 
@@ -26,27 +27,9 @@ struct RenderSettings {
         float aperture = 16.0f, shutter = 0.01f, iso = 100.0f;
     };
     std::optional<CameraExposure> cameraExposure;
-};
-
-/// Post-processing a scene file asks for ("post"); unset values come from the command line or
-/// the defaults (render/PostSettings.h documents them).
-struct PostFileSettings {
-    struct Bloom {
-        std::optional<bool> enabled;
-        std::optional<float> intensity, radius, threshold, knee;
-        std::optional<int> levels;
-        std::optional<bool> fireflyFilter;
-    } bloom;
-    struct Ssao {
-        std::optional<bool> enabled;
-        std::optional<float> radius, bias, power;
-        std::optional<int> samples;
-    } ssao;
-    struct AutoExposure {
-        std::optional<bool> enabled;
-        std::optional<float> minEv100, maxEv100, lowPercentile, highPercentile, speedUp, speedDown;
-    } autoExposure;
-    std::optional<bool> fxaa;
+    /// Constant ambient radiance for the diffuse lobe. No scene-file key: a built-in scene's
+    /// (the LearnOpenGL lighting demo's 0.03 × albedo).
+    std::optional<glm::vec3> ambient;
 };
 
 /// The environment a scene file asks for. Until image-based lighting exists only `color`
@@ -56,13 +39,18 @@ struct EnvironmentSettings {
     std::string file;       ///< path resolved against the scene file's directory
     float intensity = 1.0f;
     float rotationDegrees = 0.0f;
+    /// With neither `file` nor `color`: the procedural sky, or (false) no environment. No
+    /// scene-file key: built-in scenes without one (a lighting tutorial, an indoor level) say so.
+    bool skyByDefault = true;
 };
 
 struct SceneDocument {
     Scene scene;
     RenderSettings render;
     EnvironmentSettings environment;
-    PostFileSettings post;
+    /// Post-processing the file asks for ("post"); unset values come from the command line or
+    /// the defaults (settings/PassSettings.h documents them).
+    PostOverrides post;
     std::filesystem::path source;
 };
 

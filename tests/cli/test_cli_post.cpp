@@ -5,9 +5,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <set>
+#include <type_traits>
 
 #include "CliRunner.h"
 #include "core/ImageIO.h"
+#include "settings/PassSettings.h"
 
 namespace fs = std::filesystem;
 using specula::test::runCli;
@@ -139,4 +143,26 @@ TEST(CliPost, BadValues)
     expectOneLineFailure("render --ssao-power -2" + out, "--ssao-power must be positive");
     expectOneLineFailure("render --debug-view glow" + out, "--debug-view");
     expectOneLineFailure("render --tonemap filmic" + out, "agx");
+}
+
+TEST(CliPost, FlagsAreTheTablesRows)
+{
+    // Every command line takes exactly the passes' command-line rows as flags (and --ev100).
+    std::set<std::string> expected;
+    specula::PostOverrides none;
+    specula::forEachPass([&](auto& pass) {
+        using T = typename std::decay_t<decltype(pass)>::Settings;
+        const auto& table = specula::settingsTable<T>();
+        for (const auto& field : table.fields)
+            if (field.commandLine) expected.insert("--" + specula::flagName(table, field));
+    }, none);
+    for (const char* command : {"render", "bench", "view", "gallery"}) {
+        const auto r = runCli(std::string(command) + " --help");
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        std::set<std::string> listed;
+        const std::regex flag(R"(--(bloom|ssao|fxaa|auto-exposure)[a-z0-9-]*)");
+        for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), flag); it != std::sregex_iterator(); ++it)
+            listed.insert(it->str());
+        EXPECT_EQ(listed, expected) << command << " --help:\n" << r.out;
+    }
 }

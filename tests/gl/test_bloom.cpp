@@ -54,9 +54,9 @@ bool allFinite(const std::vector<float>& pixels)
     return true;
 }
 
-render::BloomSettings conserving(float intensity, int levels)
+BloomSettings conserving(float intensity, int levels)
 {
-    render::BloomSettings s;
+    BloomSettings s;
     s.enabled = true;
     s.intensity = intensity;
     s.levels = levels;
@@ -173,7 +173,7 @@ TEST_F(GlTest, BloomNeverMakesNanOrInf)
     render::BloomPass bloom;
     for (bool karis : {false, true}) {
         for (float threshold : {0.0f, 1.0f}) {
-            render::BloomSettings s = conserving(1.0f, 8);
+            BloomSettings s = conserving(1.0f, 8);
             s.fireflyFilter = karis;
             s.threshold = threshold;
             gl::Texture single = makeHdr(64, 48, {{31, 23, 65504.0f}, {0, 0, 65504.0f}, {63, 47, 65504.0f}});
@@ -195,7 +195,7 @@ TEST_F(GlTest, BloomFireflyFilterTamesSinglePixels)
     // uniform bright area keeps (nearly) all of it.
     gl::State state;
     render::BloomPass bloom;
-    render::BloomSettings s = conserving(0.5f, 5);
+    BloomSettings s = conserving(0.5f, 5);
     s.fireflyFilter = true;
     gl::Texture single = makeHdr(128, 128, {{64, 64, 1000.0f}});
     bloom.apply(state, single, s, 1.0f, true);
@@ -211,7 +211,7 @@ TEST_F(GlTest, BloomThresholdKeepsDimPixelsOut)
 {
     gl::State state;
     render::BloomPass bloom;
-    render::BloomSettings s = conserving(1.0f, 4);
+    BloomSettings s = conserving(1.0f, 4);
     s.threshold = 1.0f;
     s.knee = 0.5f;
     gl::Texture dim = makeHdr(64, 64, {}, 0.4f); // below threshold - knee: no glow at all

@@ -7,7 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/PostSettings.h"
+#include "render/CameraExposure.h"
 #include "render/Renderer.h"
 #include "render/Tonemap.h"
 #include "scene/Procedural.h"

@@ -71,7 +71,7 @@ TEST_F(GlTest, EveryPassAtSeveralSizes)
         const ImageFloat radiance = renderer.readRadiance();
         for (float v : radiance.pixels) ASSERT_TRUE(std::isfinite(v)) << size.width << "x" << size.height;
         EXPECT_EQ(renderer.readImage().width, size.width);
-        for (render::DebugView view : {render::DebugView::Ssao, render::DebugView::Bloom}) {
+        for (DebugView view : {DebugView::Ssao, DebugView::Bloom}) {
             render::FrameSettings d = s;
             d.debugView = view;
             renderer.render(render::defaultView(demo, -1, aspect), d);

@@ -109,25 +109,25 @@ TEST_F(GlTest, EveryShadingModelRenders)
     // Debug views too: base colour shows the base colour exactly.
     render::FrameSettings settings = testSettings();
     settings.width = settings.height = 64;
-    settings.debugView = render::DebugView::BaseColor;
+    settings.debugView = DebugView::BaseColor;
     renderer.render(testView(), settings);
     EXPECT_NEAR(pixel(renderer.readRadiance(), {32, 32}).g, 0.3f, 1e-3f);
     // Normal: the sphere's centre faces the camera (+Z): bytes (128, 128, 255), ± 4 because
     // pixel (32, 32)'s centre is half a pixel off the image centre (n.x, n.y ≈ ±0.02).
-    settings.debugView = render::DebugView::Normal;
+    settings.debugView = DebugView::Normal;
     renderer.render(testView(), settings);
     const ImageRGBA8 normal = renderer.readImage();
     const uint8_t* centre = &normal.pixels[(32u * 64u + 32u) * 4u];
     EXPECT_NEAR(centre[0], 128, 4);
     EXPECT_NEAR(centre[1], 128, 4);
     EXPECT_EQ(centre[2], 255);
-    for (auto view : {render::DebugView::Roughness, render::DebugView::Metallic, render::DebugView::Occlusion,
-                      render::DebugView::Emissive, render::DebugView::BrdfD, render::DebugView::BrdfG, render::DebugView::BrdfF}) {
+    for (auto view : {DebugView::Roughness, DebugView::Metallic, DebugView::Occlusion,
+                      DebugView::Emissive, DebugView::BrdfD, DebugView::BrdfG, DebugView::BrdfF}) {
         settings.debugView = view;
         renderer.render(testView(), settings);
     }
     // Roughness 0.3 as a byte (the last frame but six: render it again).
-    settings.debugView = render::DebugView::Roughness;
+    settings.debugView = DebugView::Roughness;
     renderer.render(testView(), settings);
     EXPECT_NEAR(renderer.readImage().pixels[(32u * 64u + 32u) * 4u], 77, 1); // 0.3 × 255
 }

@@ -52,7 +52,7 @@ AoImage renderAo(render::Renderer& renderer, const render::View& view, int width
     s.width = width;
     s.height = height;
     s.msaa = 1;
-    s.debugView = render::DebugView::Ssao;
+    s.debugView = DebugView::Ssao;
     s.ssao.radius = radius;
     renderer.render(view, s);
     return {renderer.readRadiance()};

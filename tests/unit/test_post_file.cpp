@@ -26,33 +26,33 @@ TEST(PostFile, PassesAsObjectsAndBooleans)
         "autoExposure": {"enabled": false, "minEv100": 0, "maxEv100": 12, "lowPercentile": 0.2, "highPercentile": 0.9,
                          "speedUp": 2, "speedDown": 0.5},
         "fxaa": true}})");
-    EXPECT_EQ(d.post.bloom.enabled, true);
-    EXPECT_EQ(d.post.bloom.intensity, 0.1f);
-    EXPECT_EQ(d.post.bloom.levels, 5);
-    EXPECT_EQ(d.post.bloom.radius, 1.5f);
-    EXPECT_EQ(d.post.bloom.threshold, 1.0f);
-    EXPECT_EQ(d.post.bloom.knee, 0.25f);
-    EXPECT_EQ(d.post.bloom.fireflyFilter, false);
-    EXPECT_EQ(d.post.ssao.enabled, true);
-    EXPECT_EQ(d.post.ssao.radius, 0.3f);
-    EXPECT_EQ(d.post.ssao.bias, 0.01f);
-    EXPECT_EQ(d.post.ssao.power, 2.0f);
-    EXPECT_EQ(d.post.ssao.samples, 32);
-    EXPECT_EQ(d.post.autoExposure.enabled, false);
-    EXPECT_EQ(d.post.autoExposure.minEv100, 0.0f);
-    EXPECT_EQ(d.post.autoExposure.maxEv100, 12.0f);
-    EXPECT_EQ(d.post.autoExposure.lowPercentile, 0.2f);
-    EXPECT_EQ(d.post.autoExposure.highPercentile, 0.9f);
-    EXPECT_EQ(d.post.autoExposure.speedUp, 2.0f);
-    EXPECT_EQ(d.post.autoExposure.speedDown, 0.5f);
-    EXPECT_EQ(d.post.fxaa, true);
+    EXPECT_EQ(d.post.bloom.get(&BloomSettings::enabled), true);
+    EXPECT_EQ(d.post.bloom.get(&BloomSettings::intensity), 0.1f);
+    EXPECT_EQ(d.post.bloom.get(&BloomSettings::levels), 5);
+    EXPECT_EQ(d.post.bloom.get(&BloomSettings::radius), 1.5f);
+    EXPECT_EQ(d.post.bloom.get(&BloomSettings::threshold), 1.0f);
+    EXPECT_EQ(d.post.bloom.get(&BloomSettings::knee), 0.25f);
+    EXPECT_EQ(d.post.bloom.get(&BloomSettings::fireflyFilter), false);
+    EXPECT_EQ(d.post.ssao.get(&SsaoSettings::enabled), true);
+    EXPECT_EQ(d.post.ssao.get(&SsaoSettings::radius), 0.3f);
+    EXPECT_EQ(d.post.ssao.get(&SsaoSettings::bias), 0.01f);
+    EXPECT_EQ(d.post.ssao.get(&SsaoSettings::power), 2.0f);
+    EXPECT_EQ(d.post.ssao.get(&SsaoSettings::samples), 32);
+    EXPECT_EQ(d.post.autoExposure.get(&AutoExposureSettings::enabled), false);
+    EXPECT_EQ(d.post.autoExposure.get(&AutoExposureSettings::minEv100), 0.0f);
+    EXPECT_EQ(d.post.autoExposure.get(&AutoExposureSettings::maxEv100), 12.0f);
+    EXPECT_EQ(d.post.autoExposure.get(&AutoExposureSettings::lowPercentile), 0.2f);
+    EXPECT_EQ(d.post.autoExposure.get(&AutoExposureSettings::highPercentile), 0.9f);
+    EXPECT_EQ(d.post.autoExposure.get(&AutoExposureSettings::speedUp), 2.0f);
+    EXPECT_EQ(d.post.autoExposure.get(&AutoExposureSettings::speedDown), 0.5f);
+    EXPECT_EQ(d.post.fxaa.get(&FxaaSettings::enabled), true);
 
     const auto off = load(R"({"post": {"bloom": false, "ssao": true}})");
-    EXPECT_EQ(off.post.bloom.enabled, false);
-    EXPECT_EQ(off.post.ssao.enabled, true);
-    EXPECT_FALSE(off.post.ssao.radius.has_value());
-    EXPECT_FALSE(off.post.fxaa.has_value());
-    EXPECT_FALSE(off.post.autoExposure.enabled.has_value());
+    EXPECT_EQ(off.post.bloom.get(&BloomSettings::enabled), false);
+    EXPECT_EQ(off.post.ssao.get(&SsaoSettings::enabled), true);
+    EXPECT_FALSE(off.post.ssao.get(&SsaoSettings::radius).has_value());
+    EXPECT_FALSE(off.post.fxaa.get(&FxaaSettings::enabled).has_value());
+    EXPECT_FALSE(off.post.autoExposure.get(&AutoExposureSettings::enabled).has_value());
 }
 
 TEST(PostFile, CameraExposure)

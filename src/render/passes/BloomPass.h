@@ -11,8 +11,8 @@
 // image (shaders/post/bloom.glsl), so light near the border keeps its glow's energy too.
 #include <memory>
 
-#include "render/PostSettings.h"
 #include "render/graph/FrameGraph.h"
+#include "settings/PassSettings.h"
 
 namespace specula::gl {
 class State;

@@ -4,8 +4,8 @@
 // and left on the GPU for the tone mapper (no read-back, no stall).
 #include <memory>
 
-#include "render/PostSettings.h"
 #include "render/graph/FrameGraph.h"
+#include "settings/PassSettings.h"
 
 namespace specula::gl {
 class State;

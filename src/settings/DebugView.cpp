@@ -1,9 +1,6 @@
-#include "render/PostSettings.h"
+#include "settings/DebugView.h"
 
-#include <algorithm>
-#include <cmath>
-
-namespace specula::render {
+namespace specula {
 
 std::optional<DebugView> parseDebugView(std::string_view name)
 {
@@ -35,20 +32,4 @@ const char* debugViewName(DebugView view)
     return "none";
 }
 
-float ev100FromCamera(float aperture, float shutterSeconds, float iso)
-{
-    return std::log2(aperture * aperture / shutterSeconds * 100.0f / iso);
-}
-
-float exposureFromEv100(float ev100)
-{
-    return 1.0f / (1.2f * std::exp2(ev100));
-}
-
-float ev100FromLuminance(float luminance)
-{
-    // S = 100, K = 12.5 (the calibration constant of Canon, Nikon and Sekonic meters).
-    return std::log2(std::max(luminance, 1e-30f) * 100.0f / 12.5f);
-}
-
-} // namespace specula::render
+} // namespace specula

@@ -1,11 +1,14 @@
 #pragma once
-// Parameters of the post-processing passes (bloom, SSAO, exposure, FXAA, debug views): plain
-// data held by render::FrameSettings. Every pass is off by default, and a pass that is off
-// costs nothing: no target is allocated, no program compiled, no dispatch issued.
-#include <optional>
-#include <string_view>
+// Parameters of the post-processing passes (bloom, SSAO, exposure, FXAA): plain data held by
+// render::FrameSettings, each declared once with its table (settingsTable<T>(), the .cpp), which
+// the command line, the scene file's "post" object and the viewer all read. Every pass is off by
+// default, and a pass that is off costs nothing: no target is allocated, no program compiled,
+// no dispatch issued.
+//
+// A new field is one member here and one row in its table.
+#include "settings/SettingField.h"
 
-namespace specula::render {
+namespace specula {
 
 /// Physically based bloom (Jimenez 2014, "Next Generation Post Processing in Call of Duty:
 /// Advanced Warfare"): the frame plus `intensity` × an energy-preserving wide blur of itself.
@@ -53,6 +56,7 @@ struct AutoExposureSettings {
     float speedUp = 3.0f;
     float speedDown = 1.0f;
     /// Seconds since the previous frame. 0 = converge within this frame (still renders).
+    /// The frame's clock, not a setting: the viewer sets it each frame; it has no table row.
     float deltaTime = 0.0f;
 };
 
@@ -61,34 +65,36 @@ struct FxaaSettings {
     bool enabled = false;
 };
 
-/// Shows one buffer instead of the frame.
-enum class DebugView {
-    None,
-    Ssao,  ///< the blurred ambient occlusion, 1 = unoccluded, as grey (turns SSAO on)
-    Bloom, ///< only the glow bloom adds, exposed and tone mapped like the frame (turns bloom on)
-    // Material inputs and BRDF terms, from the forward pass with exposure and tone mapping off
-    // (shaders/forward/debug_views.glsl): colours as authored, scalars as value × 255.
-    BaseColor, ///< base colour × texture × vertex colour
-    Normal,    ///< world-space shading normal (after normal mapping), n × 0.5 + 0.5
-    Roughness, ///< perceptual roughness
-    Metallic,
-    Occlusion, ///< the material's occlusion (× SSAO when on)
-    Emissive,  ///< emissive radiance, cd/m²
-    BrdfD,     ///< D / D(n·h = 1) for the first light
-    BrdfG,     ///< G for the first light
-    BrdfF,     ///< F (rgb) for the first light
+/// Each pass's table; defined for the four structs above.
+template <typename T>
+const SettingsTable<T>& settingsTable();
+template <>
+const SettingsTable<BloomSettings>& settingsTable<BloomSettings>();
+template <>
+const SettingsTable<SsaoSettings>& settingsTable<SsaoSettings>();
+template <>
+const SettingsTable<AutoExposureSettings>& settingsTable<AutoExposureSettings>();
+template <>
+const SettingsTable<FxaaSettings>& settingsTable<FxaaSettings>();
+
+/// What one source (the scene file's "post", the command line) sets of each pass.
+struct PostOverrides {
+    SettingsOverride<BloomSettings> bloom;
+    SettingsOverride<SsaoSettings> ssao;
+    SettingsOverride<FxaaSettings> fxaa;
+    SettingsOverride<AutoExposureSettings> autoExposure;
 };
 
-std::optional<DebugView> parseDebugView(std::string_view name);
-const char* debugViewName(DebugView view);
+/// Calls f(s.bloom...), f(s.ssao...), f(s.fxaa...), f(s.autoExposure...): the same pass of each
+/// of `s` (structs with those four members: render::FrameSettings, PostOverrides), passes in the
+/// order the command line's help lists them.
+template <typename F, typename... S>
+void forEachPass(F&& f, S&... s)
+{
+    f(s.bloom...);
+    f(s.ssao...);
+    f(s.fxaa...);
+    f(s.autoExposure...);
+}
 
-/// EV100 of a camera (Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", camera exposure):
-/// log2(N² / t × 100 / S) for f-number N, shutter time t (seconds) and ISO S.
-float ev100FromCamera(float aperture, float shutterSeconds, float iso);
-/// The scale a camera at `ev100` applies to radiance: 1 / (1.2 × 2^EV100) (ibid.,
-/// saturation-based sensitivity: a luminance of 1.2 × 2^EV100 cd/m² just saturates).
-float exposureFromEv100(float ev100);
-/// EV100 a reflected-light meter (K = 12.5) picks for an average luminance (cd/m²).
-float ev100FromLuminance(float luminance);
-
-} // namespace specula::render
+} // namespace specula

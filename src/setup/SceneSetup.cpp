@@ -1,42 +1,21 @@
-#include "SceneSetup.h"
+#include "setup/SceneSetup.h"
 
+#include <cmath>
 #include <cstdio>
+#include <type_traits>
+#include <variant>
 
 #include "core/Error.h"
 #include "core/Log.h"
+#include "render/CameraExposure.h"
+#include "scene/BuiltinScenes.h"
 #include "scene/DemoScenes.h"
-#include "scene/DoomLevel.h"
 
-namespace specula::cli {
+namespace specula::setup {
 
 scene::SceneDocument loadSceneOrBuiltin(const std::string& name)
 {
-    if (name.empty() || name == "demo") {
-        scene::SceneDocument document;
-        document.scene = scene::makeDemoScene();
-        document.render.tonemap = "neutral";
-        return document;
-    }
-    if (name == "learnopengl" || name == "learnopengl-ibl") {
-        // The tutorial's look: Reinhard, Schlick-GGX (k = r^2/2 for the environment), and for
-        // the lighting demo a constant ambient 0.03 x albedo (resolveSettings).
-        scene::SceneDocument document;
-        document.scene = name == "learnopengl" ? scene::makeLearnOpenGlScene() : scene::makeLearnOpenGlIblScene();
-        document.render.tonemap = "reinhard";
-        document.render.brdfG = "schlick-ggx";
-        document.render.defaultLights = false;
-        return document;
-    }
-    if (name == "doom") {
-        // The Doom-era demo level (scene/DoomLevel.h): its materials use the Doom model, and
-        // its frame is Doom's 8-bit frame (render/DoomPass) unless --shading says otherwise.
-        // Its lamps hold point lights for the other models; it needs no default rig.
-        scene::SceneDocument document;
-        document.scene = scene::doom::makeDemoLevel();
-        document.render.defaultLights = false;
-        document.render.shading = "doom";
-        return document;
-    }
+    if (std::optional<scene::SceneDocument> builtin = scene::builtinScene(name)) return std::move(*builtin);
     return scene::loadScene(name);
 }
 
@@ -64,12 +43,48 @@ void applyMaterialOverrides(const scene::SceneDocument& document, const FrameOpt
     o.fresnel = parseOption<scene::BrdfFresnel>(options.brdfF, "--brdf-f", scene::parseBrdfFresnel, scene::brdfFresnelNames());
     o.diffuse = parseOption<scene::BrdfDiffuse>(options.brdfDiffuse, "--brdf-diffuse", scene::parseBrdfDiffuse, scene::brdfDiffuseNames());
     if (options.debugView) {
-        const auto view = render::parseDebugView(*options.debugView);
+        const auto view = parseDebugView(*options.debugView);
         if (!view)
             throw Error("unknown --debug-view '{}' (base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, "
                         "brdf-f, ssao, bloom)", *options.debugView);
         s.debugView = *view;
     }
+}
+
+/// Checks each value the options set of a pass against its table: "--bloom-levels must be
+/// between 1 and 8 (got 9)". (The scene file's values were checked as it was read.)
+template <typename T>
+void checkFlags(const SettingsOverride<T>& flags)
+{
+    const SettingsTable<T>& table = settingsTable<T>();
+    for (const SettingField<T>& field : table.fields) {
+        const bool set = std::visit([&](auto m) { return flags.has(m); }, field.member);
+        if (!set) continue;
+        const double value = field.value(flags.values());
+        if (!field.range.contains(value)) throw Error("--{} {} (got {})", flagName(table, field), field.range.requirement(), value);
+    }
+}
+
+/// The passes and the camera exposure: options over scene file over defaults.
+void resolvePostSettings(const scene::SceneDocument& document, const FrameOptions& options, render::FrameSettings& s)
+{
+    forEachPass(
+        [](auto& pass, const auto& file, const auto& flags) {
+            file.applyTo(pass);
+            checkFlags(flags);
+            flags.applyTo(pass);
+        },
+        s, document.post, options.post);
+
+    // The camera: --ev100, else the file's render.ev100 or camera aperture/shutter/ISO.
+    if (options.ev100) {
+        s.ev100 = *options.ev100;
+    } else if (document.render.ev100) {
+        s.ev100 = *document.render.ev100;
+    } else if (const auto& camera = document.render.cameraExposure) {
+        s.ev100 = render::ev100FromCamera(camera->aperture, camera->shutter, camera->iso);
+    }
+    if (s.ev100 && !std::isfinite(*s.ev100)) throw Error("--ev100 must be a finite number (got {})", double(*s.ev100));
 }
 
 } // namespace
@@ -118,8 +133,8 @@ render::FrameSettings resolveSettings(const scene::SceneDocument& document, cons
             throw Error("--skybox wants on, off or blur=R with R a roughness in [0, 1] (got '{}')", sky);
         }
     }
-    if (document.scene.name == "learnopengl") s.ambient = glm::vec3(0.03f);
-    resolvePostSettings(document, options.post, s);
+    if (file.ambient) s.ambient = *file.ambient;
+    resolvePostSettings(document, options, s);
     if (s.materialOverride.model == scene::ShadingModel::Doom) {
         // Doom's 8-bit frame holds palette colours only (render::Renderer leaves out whatever
         // would blend or curve them): say so when they were asked for, rather than drop them quietly.
@@ -158,9 +173,7 @@ std::optional<render::EnvironmentMap> loadEnvironment(const scene::SceneDocument
     }
     if (!document.environment.file.empty()) return render::loadEnvironmentMap(document.environment.file);
     if (document.environment.color) return render::constantEnvironment(*document.environment.color);
-    // The lighting tutorial has no environment, and the Doom level is indoors: a sky would
-    // light its rooms through their walls under the image-based models.
-    if (document.scene.name == "learnopengl" || document.scene.name == "doom") return std::nullopt;
+    if (!document.environment.skyByDefault) return std::nullopt;
     return render::proceduralSky();
 }
 
@@ -194,4 +207,4 @@ render::View prepareView(scene::SceneDocument& document, const FrameOptions& opt
     return view;
 }
 
-} // namespace specula::cli
+} // namespace specula::setup

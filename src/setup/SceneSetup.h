@@ -1,15 +1,20 @@
 #pragma once
-// Glue shared by the commands: which scene, which settings, which view.
+// The setup every app shares before its first frame: which scene, which settings, which
+// environment, which view. A layer above render (it composes render's types) and below the
+// apps, which only parse arguments into FrameOptions and draw their UI.
+#include <filesystem>
 #include <optional>
 #include <string>
 
-#include "PostOptions.h"
 #include "render/Renderer.h"
 #include "scene/SceneFile.h"
+#include "settings/PassSettings.h"
 
-namespace specula::cli {
+namespace specula::setup {
 
-/// Options every rendering command shares; unset ones come from the scene file, then defaults.
+/// What the user asks of every frame, over the scene document; unset options come from the
+/// scene file, then from the defaults. The apps fill it from the command line, so errors name
+/// each option by its flag (--msaa).
 struct FrameOptions {
     std::optional<int> width, height, msaa;
     std::optional<float> exposure;
@@ -31,18 +36,21 @@ struct FrameOptions {
     bool noCache = false;
     std::optional<std::string> energyCompensation; ///< on (default) | off
     bool gizmos = false;
-    PostOptions post; ///< bloom, SSAO, FXAA, exposure, debug views
+    /// The post-processing passes' flags (--bloom, --bloom-intensity, ...: the passes' tables);
+    /// resolveSettings checks each value against its table's range.
+    PostOverrides post;
+    std::optional<float> ev100; ///< physical camera exposure (--ev100)
 };
 
-/// `name` is a .gltf/.glb/.json path, or a built-in scene ("demo", "learnopengl"); empty = demo.
+/// `name` is a .gltf/.glb/.json path, or a built-in scene (scene/BuiltinScenes.h); empty = demo.
 scene::SceneDocument loadSceneOrBuiltin(const std::string& name);
 
-/// Settings from the scene document overridden by the command line. Throws Error on bad values.
+/// Settings from the scene document overridden by the options. Throws Error on bad values.
 render::FrameSettings resolveSettings(const scene::SceneDocument& document, const FrameOptions& options);
 
 /// The environment the frame asks for: none, or a map (file, constant colour, procedural sky).
-/// Command line over scene file; the default is the procedural sky, except for the
-/// learnopengl scene (none, like the tutorial). Throws Error for bad files or values.
+/// Options over scene file; with neither, the procedural sky unless the document says it wants
+/// none (EnvironmentSettings::skyByDefault). Throws Error for bad files or values.
 std::optional<render::EnvironmentMap> loadEnvironment(const scene::SceneDocument& document, const FrameOptions& options);
 /// Bake settings and cache directory for the frame (--bake-preset, --no-cache).
 render::BakeSettings resolveBakeSettings(const FrameOptions& options);
@@ -53,4 +61,4 @@ std::filesystem::path cacheDirectory(const FrameOptions& options);
 render::View prepareView(scene::SceneDocument& document, const FrameOptions& options,
                          const render::FrameSettings& settings, int* added = nullptr, bool hasEnvironment = false);
 
-} // namespace specula::cli
+} // namespace specula::setup

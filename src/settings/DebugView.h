@@ -1,0 +1,30 @@
+#pragma once
+// Which buffer a frame shows instead of itself (--debug-view, the viewer's combo). Plain data
+// held by render::FrameSettings, named here so that the apps parse it without the renderer.
+#include <optional>
+#include <string_view>
+
+namespace specula {
+
+/// Shows one buffer instead of the frame.
+enum class DebugView {
+    None,
+    Ssao,  ///< the blurred ambient occlusion, 1 = unoccluded, as grey (turns SSAO on)
+    Bloom, ///< only the glow bloom adds, exposed and tone mapped like the frame (turns bloom on)
+    // Material inputs and BRDF terms, from the forward pass with exposure and tone mapping off
+    // (shaders/forward/debug_views.glsl): colours as authored, scalars as value × 255.
+    BaseColor, ///< base colour × texture × vertex colour
+    Normal,    ///< world-space shading normal (after normal mapping), n × 0.5 + 0.5
+    Roughness, ///< perceptual roughness
+    Metallic,
+    Occlusion, ///< the material's occlusion (× SSAO when on)
+    Emissive,  ///< emissive radiance, cd/m²
+    BrdfD,     ///< D / D(n·h = 1) for the first light
+    BrdfG,     ///< G for the first light
+    BrdfF,     ///< F (rgb) for the first light
+};
+
+std::optional<DebugView> parseDebugView(std::string_view name);
+const char* debugViewName(DebugView view);
+
+} // namespace specula
