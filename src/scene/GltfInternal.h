@@ -1,0 +1,142 @@
+#pragma once
+// Private to the glTF importer, which is split by concern: GltfImporter.cpp (loading the file,
+// the checks, cameras, lights, nodes and the scene), GltfMeshes.cpp (accessors and primitives)
+// and GltfMaterials.cpp (images, samplers, textures and materials). Not for use elsewhere.
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <tiny_gltf.h>
+
+#include "core/Error.h"
+#include "core/Log.h"
+#include "scene/Scene.h"
+
+namespace specula::scene::gltf_detail {
+
+/// Why each image that failed to decode failed, by image index.
+using ImageFailures = std::map<int, std::string>;
+
+// tinygltf's image callback (GltfMaterials.cpp).
+bool loadImageData(tinygltf::Image* image, const int imageIndex, std::string* /*err*/, std::string* /*warn*/,
+                   int /*reqWidth*/, int /*reqHeight*/, const unsigned char* bytes, int size, void* user);
+
+// tinygltf::Value helpers (GltfImporter.cpp)
+const tinygltf::Value* member(const tinygltf::Value& object, const char* key);
+const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name);
+std::optional<double> number(const tinygltf::Value& object, const char* key);
+std::optional<int> integer(const tinygltf::Value& object, const char* key);
+std::optional<glm::vec2> vec2(const tinygltf::Value& object, const char* key);
+
+// Accessor contents (GltfMeshes.cpp)
+template <typename T>
+struct AccessorData;
+
+// ---------------------------------------------------------------------------------------------
+// The conversion from tinygltf's model to our scene
+
+class Importer {
+public:
+    Importer(std::string file, std::string name, tinygltf::Model& model, ImageFailures imageFailures)
+        : mFile(std::move(file)), mModel(model), mImageFailures(std::move(imageFailures))
+    {
+        mScene.name = std::move(name);
+    }
+
+    Scene run()
+    {
+        checkVersion();
+        checkRequiredExtensions();
+        checkBufferViews();
+        convertImages();
+        convertSamplers();
+        convertMaterials();
+        convertMeshes();
+        convertCameras();
+        convertLights();
+        convertNodes();
+        chooseRoots();
+        return std::move(mScene);
+    }
+
+private:
+    template <typename... Args>
+    [[noreturn]] void fail(fmt::format_string<Args...> format, Args&&... args) const
+    {
+        throw Error("{}: {}", mFile, fmt::format(format, std::forward<Args>(args)...));
+    }
+
+    template <typename... Args>
+    void warn(fmt::format_string<Args...> format, Args&&... args)
+    {
+        std::string message = fmt::format("{}: {}", mFile, fmt::format(format, std::forward<Args>(args)...));
+        log::warn("{}", message);
+        mScene.warnings.push_back(std::move(message));
+    }
+
+    /// `items[index]`, or an error naming `where` the index came from.
+    template <typename T>
+    const T& at(const std::vector<T>& items, int index, std::string_view kind, std::string_view where) const
+    {
+        if (index < 0 || size_t(index) >= items.size())
+            fail("{} refers to {} {}, which is out of range (the file has {})", where, kind, index, items.size());
+        return items[size_t(index)];
+    }
+
+    template <int N>
+    glm::vec<N, float> factor(const std::vector<double>& values, glm::vec<N, float> fallback, std::string_view where,
+                              std::string_view what) const
+    {
+        if (values.empty()) return fallback;
+        if (values.size() != size_t(N)) fail("{}: {} has {} numbers instead of {}", where, what, values.size(), N);
+        glm::vec<N, float> out;
+        for (int i = 0; i < N; ++i) out[i] = float(values[size_t(i)]);
+        return out;
+    }
+
+    // -- checks (GltfImporter.cpp) -------------------------------------------------------------
+
+    void checkVersion() const;
+    void checkRequiredExtensions() const;
+    void checkBufferViews() const;
+
+    // -- accessors (GltfMeshes.cpp) ------------------------------------------------------------
+
+    const unsigned char* elements(int viewIndex, size_t byteOffset, size_t count, size_t elementSize, size_t stride,
+                                  std::string_view where) const;
+    template <typename T>
+    AccessorData<T> read(int index, std::string_view where) const;
+
+    // -- images, samplers, materials (GltfMaterials.cpp) ---------------------------------------
+
+    void convertImages();
+    static Wrap wrap(int mode);
+    void convertSamplers();
+    TextureRef textureRef(int textureIndex, int texCoord, const tinygltf::ExtensionMap& extensions,
+                          std::string_view where);
+
+    void convertMaterials();
+
+    // -- meshes (GltfMeshes.cpp) ---------------------------------------------------------------
+
+    std::optional<Primitive> convertPrimitive(const tinygltf::Primitive& source, const std::string& where);
+    void convertMeshes();
+
+    // -- cameras, lights, nodes (GltfImporter.cpp) ---------------------------------------------
+
+    void convertCameras();
+    void convertLights();
+    void convertNodes();
+    void chooseRoots();
+
+    std::string mFile; ///< the path as the user gave it, for messages
+    tinygltf::Model& mModel;
+    ImageFailures mImageFailures;
+    Scene mScene;
+    std::vector<int> mParent; ///< per node, -1 for roots
+};
+
+} // namespace specula::scene::gltf_detail

@@ -1,0 +1,235 @@
+// glTF import: images, samplers, textures and materials, with their extensions.
+#include <algorithm>
+#include <limits>
+
+#include <stb/stb_image.h>
+
+#include "scene/GltfInternal.h"
+
+namespace specula::scene::gltf_detail {
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Images
+
+/// Decodes an encoded image (PNG, JPEG, ...) to RGBA8 into `image`; returns why it failed, or "".
+/// Rows come out top first as Image wants, as long as nobody turns on stb's vertical flip (a
+/// process-wide setting; nothing in Specula does).
+std::string decodeRgba8(const unsigned char* bytes, size_t size, tinygltf::Image& image)
+{
+    if (size == 0) return "the image data is empty";
+    if (size > size_t(std::numeric_limits<int>::max())) return "the image data is too large";
+    const int length = int(size);
+    int width = 0, height = 0, channels = 0;
+    std::vector<unsigned char> pixels;
+    // stb_image also reads 16-bit PNGs through stbi_load, but truncates them (v >> 8); read
+    // them at 16 bits and round instead, so 8-bit values stored as 16-bit ones survive exactly.
+    if (stbi_is_16_bit_from_memory(bytes, length)) {
+        if (stbi_us* data = stbi_load_16_from_memory(bytes, length, &width, &height, &channels, 4)) {
+            pixels.resize(size_t(width) * size_t(height) * 4);
+            for (size_t i = 0; i < pixels.size(); ++i)
+                pixels[i] = uint8_t((uint32_t(data[i]) * 255u + 32767u) / 65535u);
+            stbi_image_free(data);
+        }
+    }
+    if (pixels.empty()) {
+        stbi_uc* data = stbi_load_from_memory(bytes, length, &width, &height, &channels, 4);
+        if (!data) {
+            const char* reason = stbi_failure_reason();
+            return fmt::format("cannot decode it ({})", reason ? reason : "unknown format");
+        }
+        pixels.assign(data, data + size_t(width) * size_t(height) * 4);
+        stbi_image_free(data);
+    }
+    image.width = width;
+    image.height = height;
+    image.component = 4;
+    image.bits = 8;
+    image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image.image = std::move(pixels);
+    return {};
+}
+
+} // namespace
+
+/// tinygltf's image callback. tinygltf fails the whole load when its own loader cannot decode
+/// an image; ours records the problem and carries on, leaving the image empty.
+bool loadImageData(tinygltf::Image* image, const int imageIndex, std::string* /*err*/, std::string* /*warn*/,
+                   int /*reqWidth*/, int /*reqHeight*/, const unsigned char* bytes, int size, void* user)
+{
+    // Images in a bufferView are decoded later, from the bufferView once it is known to lie
+    // inside its buffer: tinygltf hands us a pointer whose range it has not checked.
+    if (image->bufferView >= 0) return true;
+    const std::string reason = decodeRgba8(bytes, size_t(std::max(size, 0)), *image);
+    if (!reason.empty()) (*static_cast<ImageFailures*>(user))[imageIndex] = reason;
+    return true;
+}
+
+// -- images, samplers, materials -----------------------------------------------------------
+
+void Importer::convertImages()
+{
+    std::vector<bool> used(mModel.images.size(), false);
+    for (const tinygltf::Texture& texture : mModel.textures)
+        if (texture.source >= 0 && size_t(texture.source) < used.size()) used[size_t(texture.source)] = true;
+    for (size_t i = 0; i < mModel.images.size(); ++i) {
+        tinygltf::Image& source = mModel.images[i];
+        const auto where = fmt::format("image {}", i);
+        std::string failure;
+        if (source.bufferView >= 0) {
+            // checkBufferViews has made sure the view lies inside its buffer.
+            const tinygltf::BufferView& view = at(mModel.bufferViews, source.bufferView, "bufferView", where);
+            const unsigned char* bytes = mModel.buffers[size_t(view.buffer)].data.data() + view.byteOffset;
+            failure = decodeRgba8(bytes, view.byteLength, source);
+        } else if (source.image.empty()) {
+            // tinygltf leaves an image empty, with a warning of its own, when it cannot read
+            // the file; decoding failures were recorded by loadImageData.
+            const auto it = mImageFailures.find(int(i));
+            failure = it != mImageFailures.end() ? it->second : "the file is missing or unreadable";
+        }
+
+        Image image;
+        const bool dataUri = source.uri.starts_with("data:");
+        image.name = !source.name.empty() || dataUri ? source.name : source.uri;
+        if (failure.empty() && source.width > 0 && source.height > 0 &&
+            source.image.size() == size_t(source.width) * size_t(source.height) * 4) {
+            image.width = source.width;
+            image.height = source.height;
+            image.pixels = std::move(source.image);
+        } else {
+            if (failure.empty()) failure = "it has no pixels";
+            const std::string label =
+                source.uri.empty() || dataUri ? where : fmt::format("{} '{}'", where, source.uri);
+            // Images no texture samples directly (the DDS ones of MSFT_texture_dds) cost nothing when missing.
+            if (used[i]) {
+                warn("{}: {}; a neutral texture is used instead", label, failure);
+            } else {
+                log::debug("{}: {}: {} (unused)", mFile, label, failure);
+            }
+        }
+        mScene.images.push_back(std::move(image));
+    }
+}
+
+Wrap Importer::wrap(int mode)
+{
+    switch (mode) {
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return Wrap::ClampToEdge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return Wrap::MirroredRepeat;
+    default: return Wrap::Repeat; // glTF's default, also for invalid values
+    }
+}
+
+void Importer::convertSamplers()
+{
+    for (const tinygltf::Sampler& source : mModel.samplers) {
+        Sampler sampler;
+        sampler.magFilter = source.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ? Filter::Nearest : Filter::Linear;
+        auto minify = [&sampler](Filter filter, bool mipmaps, bool mipLinear) {
+            sampler.minFilter = filter;
+            sampler.mipmaps = mipmaps;
+            sampler.mipLinear = mipLinear;
+        };
+        switch (source.minFilter) {
+        case TINYGLTF_TEXTURE_FILTER_NEAREST: minify(Filter::Nearest, false, false); break;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR: minify(Filter::Linear, false, false); break;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: minify(Filter::Nearest, true, false); break;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: minify(Filter::Linear, true, false); break;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: minify(Filter::Nearest, true, true); break;
+        // LINEAR_MIPMAP_LINEAR, and an absent (-1) or invalid minFilter: trilinear, the default.
+        default: minify(Filter::Linear, true, true); break;
+        }
+        sampler.wrapS = wrap(source.wrapS);
+        sampler.wrapT = wrap(source.wrapT);
+        mScene.samplers.push_back(sampler);
+    }
+}
+
+TextureRef Importer::textureRef(int textureIndex, int texCoord, const tinygltf::ExtensionMap& extensions,
+                                std::string_view where)
+{
+    TextureRef ref;
+    if (textureIndex < 0) return ref; // tinygltf's "absent"
+    const tinygltf::Texture& texture = at(mModel.textures, textureIndex, "texture", where);
+    const auto name = fmt::format("texture {}", textureIndex);
+    if (texture.source < 0) {
+        warn("{} has no image in a format we read; {} is drawn without it", name, where);
+        return ref;
+    }
+    at(mModel.images, texture.source, "image", name);
+    ref.image = texture.source;
+    if (texture.sampler >= 0) {
+        at(mModel.samplers, texture.sampler, "sampler", name);
+        ref.sampler = texture.sampler;
+    }
+    ref.texCoord = texCoord;
+    if (const tinygltf::Value* transform = extension(extensions, "KHR_texture_transform")) {
+        ref.transform.offset = vec2(*transform, "offset").value_or(glm::vec2(0.0f));
+        ref.transform.rotation = float(number(*transform, "rotation").value_or(0.0));
+        ref.transform.scale = vec2(*transform, "scale").value_or(glm::vec2(1.0f));
+        if (const auto override = integer(*transform, "texCoord")) ref.texCoord = *override;
+    }
+    if (ref.texCoord != 0 && ref.texCoord != 1) {
+        warn("{} uses TEXCOORD_{}; only TEXCOORD_0 and TEXCOORD_1 are read, so TEXCOORD_0 is used", where,
+             ref.texCoord);
+        ref.texCoord = 0;
+    }
+    return ref;
+}
+
+void Importer::convertMaterials()
+{
+    for (size_t i = 0; i < mModel.materials.size(); ++i) {
+        const tinygltf::Material& source = mModel.materials[i];
+        const auto where = fmt::format("material {}", i);
+        const auto& pbr = source.pbrMetallicRoughness;
+        Material material;
+        material.name = source.name;
+        material.baseColorFactor = factor<4>(pbr.baseColorFactor, glm::vec4(1.0f), where, "baseColorFactor");
+        material.metallicFactor = float(pbr.metallicFactor);
+        material.roughnessFactor = float(pbr.roughnessFactor);
+        material.emissiveFactor = factor<3>(source.emissiveFactor, glm::vec3(0.0f), where, "emissiveFactor");
+        if (const tinygltf::Value* strength = extension(source.extensions, "KHR_materials_emissive_strength"))
+            material.emissiveStrength = float(number(*strength, "emissiveStrength").value_or(1.0));
+        if (const tinygltf::Value* specular = extension(source.extensions, "KHR_materials_specular")) {
+            material.specularFactor = float(std::clamp(number(*specular, "specularFactor").value_or(1.0), 0.0, 1.0));
+            if (const tinygltf::Value* color = member(*specular, "specularColorFactor");
+                color && color->IsArray() && color->ArrayLen() == 3)
+                for (int c = 0; c < 3; ++c)
+                    if (color->Get(c).IsNumber()) material.specularColorFactor[c] = float(std::max(color->Get(c).GetNumberAsDouble(), 0.0));
+        }
+        // KHR_materials_ior: 1.5 (the default) is F0 = 0.04 exactly; 0 means "no
+        // interface" in the extension (transmission-only), which has no F0 here: left unset.
+        if (const tinygltf::Value* ior = extension(source.extensions, "KHR_materials_ior")) {
+            const double value = number(*ior, "ior").value_or(1.5);
+            if (value >= 1.0 && value != 1.5) material.ior = float(value);
+        }
+        material.normalScale = float(source.normalTexture.scale);
+        material.occlusionStrength = float(source.occlusionTexture.strength);
+        if (source.alphaMode == "MASK") {
+            material.alphaMode = AlphaMode::Mask;
+        } else if (source.alphaMode == "BLEND") {
+            material.alphaMode = AlphaMode::Blend;
+        } else if (source.alphaMode != "OPAQUE") {
+            warn("{} has the unknown alphaMode '{}'; it is drawn opaque", where, source.alphaMode);
+        }
+        material.alphaCutoff = float(source.alphaCutoff);
+        material.doubleSided = source.doubleSided;
+
+        material.baseColorTexture = textureRef(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                               pbr.baseColorTexture.extensions, where + " baseColorTexture");
+        material.metallicRoughnessTexture =
+            textureRef(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                       pbr.metallicRoughnessTexture.extensions, where + " metallicRoughnessTexture");
+        material.normalTexture = textureRef(source.normalTexture.index, source.normalTexture.texCoord,
+                                            source.normalTexture.extensions, where + " normalTexture");
+        material.occlusionTexture = textureRef(source.occlusionTexture.index, source.occlusionTexture.texCoord,
+                                               source.occlusionTexture.extensions, where + " occlusionTexture");
+        material.emissiveTexture = textureRef(source.emissiveTexture.index, source.emissiveTexture.texCoord,
+                                              source.emissiveTexture.extensions, where + " emissiveTexture");
+        mScene.materials.push_back(std::move(material));
+    }
+}
+
+} // namespace specula::scene::gltf_detail
