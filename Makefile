@@ -2,6 +2,10 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+# CI (CI=true) builds with warnings as errors.
+ifeq ($(CI),true)
+CMAKE_FLAGS += -DSPECULA_WERROR=ON
+endif
 
 .PHONY: all bootstrap configure build demo test bench clean
 

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "render/EnvironmentMap.h"
+#include "shading/EnvironmentMap.h"
 #include "scene/DoomPalette.h"
 #include "scene/GltfImporter.h"
 #include "scene/Procedural.h"

@@ -8,7 +8,7 @@
 #include "core/Log.h"
 #include "gl/Debug.h"
 #include "platform/Context.h"
-#include "render/ContactSheet.h"
+#include "shading/ContactSheet.h"
 
 namespace specula::cli {
 namespace {

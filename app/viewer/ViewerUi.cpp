@@ -17,8 +17,8 @@
 
 #include "Viewer.h"
 #include "core/Error.h"
-#include "render/BrdfPlot.h"
-#include "render/ShadingVariant.h"
+#include "shading/BrdfPlot.h"
+#include "shading/ShadingVariant.h"
 #include "settings/PassSettings.h"
 
 namespace specula::viewer {

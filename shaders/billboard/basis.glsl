@@ -1,6 +1,6 @@
 // Billboard bases on the GPU: one function per kind, each returning the columns right, up,
 // look of a right-handed orthonormal frame (right x up = look). The same formulas and
-// fallbacks as render::billboardMatrix (src/render/Billboard.cpp); keep the two equal.
+// fallbacks as render::billboardMatrix (src/shading/Billboard.cpp); keep the two equal.
 
 // Two unit vectors with sin^2 of their angle below 1e-6 (0.06 degrees) count as parallel:
 // below that their cross product's direction is mostly rounding and would flicker.

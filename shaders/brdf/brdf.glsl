@@ -1,7 +1,7 @@
 // The BRDF dispatch: pass shaders call evaluateBrdf and never a term directly.
 // Default: the glTF 2.0 specification, Appendix B (metal-rough, GGX, separable Smith,
 // Schlick Fresnel, Lambert weighted by 1 - F). Variants come from defines, at most one per
-// group (render/ShadingVariant makes them from a material's scene::MaterialShading):
+// group (shading/ShadingVariant makes them from a material's scene::MaterialShading):
 //   D        BRDF_D_BECKMANN, BRDF_D_BLINN_PHONG                         (else GGX)
 //   G        BRDF_G_SCHLICK_GGX (Schlick-GGX, k = (r + 1)^2 / 8, UE4; k = r^2 / 2 for image-based
 //            light), BRDF_G_SMITH_GGX_CORRELATED,

@@ -2,7 +2,7 @@
 // The split-sum DFG table (Karis 2013) of one BRDF variant: for n.v = x and perceptual
 // roughness = y, A = integral of f(l, v) (n.l) with F = 1 - Fc and B = the same with F = Fc,
 // where F = f0 + (f90 - f0) Fc, so that the single-scattering specular albedo is f0 A + f90 B.
-// One source for every variant: the forward pass's D, G and F defines (render/ShadingVariant)
+// One source for every variant: the forward pass's D, G and F defines (shading/ShadingVariant)
 // select the terms of brdf/brdf.glsl, so the table integrates the BRDF the forward pass
 // evaluates, with the visibility image-based light sees (brdfVImageBased: Schlick-GGX takes
 // k = r^2 / 2 there). The half vectors are importance-sampled by the variant's own D, which

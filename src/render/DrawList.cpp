@@ -5,7 +5,7 @@
 
 #include "gl/Program.h"
 #include "gl/State.h"
-#include "render/Frustum.h"
+#include "shading/Frustum.h"
 #include "render/GpuScene.h"
 #include "shaders/shared/Bindings.h"
 #include "shaders/shared/MaterialData.h"

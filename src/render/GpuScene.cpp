@@ -6,7 +6,7 @@
 
 #include "core/Log.h"
 #include "gl/State.h"
-#include "render/ShadingVariant.h"
+#include "shading/ShadingVariant.h"
 #include "shaders/shared/Bindings.h"
 #include "shaders/shared/MaterialData.h"
 

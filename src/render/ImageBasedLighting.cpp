@@ -21,7 +21,7 @@
 #include "gl/ShaderSource.h"
 #include "gl/State.h"
 #include "gl/Texture.h"
-#include "render/VariantKey.h"
+#include "shading/VariantKey.h"
 
 namespace specula::render {
 namespace fs = std::filesystem;
@@ -329,7 +329,7 @@ const gl::Texture& ImageBasedLighting::dfg(gl::State& state, const ResolvedShadi
     const ResolvedShading variant = dfgVariant(shading);
     gl::Texture& lut = r.luts[dfgKey(variant)];
     if (lut) return lut;
-    // The defines are the forward pass's for this D, G and F (one table, render/VariantKey).
+    // The defines are the forward pass's for this D, G and F (one table, shading/VariantKey).
     const std::vector<std::string> defines = ForwardVariant::make(0, variant, DebugView::None, false, false, false, false).defines();
     const std::string name = dfgName(variant);
     const std::string label = "dfg " + name;

@@ -10,8 +10,8 @@
 #include <string>
 #include <string_view>
 
-#include "render/EnvironmentMap.h"
-#include "render/ShadingVariant.h"
+#include "shading/EnvironmentMap.h"
+#include "shading/ShadingVariant.h"
 
 namespace specula::gl {
 class State;

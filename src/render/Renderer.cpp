@@ -8,12 +8,12 @@
 #include "gl/Framebuffer.h"
 #include "gl/Info.h"
 #include "gl/TimerQuery.h"
-#include "render/CameraExposure.h"
+#include "shading/CameraExposure.h"
 #include "render/FrameContext.h"
 #include "render/GpuScene.h"
 #include "render/graph/GlGraphBackend.h"
 #include "render/pipelines/FramePipelines.h"
-#include "render/VariantKey.h"
+#include "shading/VariantKey.h"
 #include "shaders/shared/Bindings.h"
 
 namespace specula::render {
@@ -252,6 +252,7 @@ void Renderer::render(const View& view, const FrameSettings& requested)
     frame->graph.execute(r.backend);
     r.backend.endFrame();
     r.stats.drawCalls = r.stores.state.drawCalls();
+    r.stats.transientTextures = r.backend.liveTextures();
     for (const GraphPassTiming& t : r.backend.timings()) r.stats.passes.push_back({t.name, t.timer->elapsedMs(), t.wallMs});
     r.last = std::move(frame);
     r.lastSettings = settings;

@@ -14,7 +14,7 @@
 #include "render/ImageBasedLighting.h"
 #include "render/PlacedLight.h"
 #include "settings/PassSettings.h"
-#include "render/Tonemap.h"
+#include "shading/Tonemap.h"
 #include "render/View.h"
 #include "scene/Scene.h"
 #include "settings/DebugView.h"
@@ -110,6 +110,9 @@ struct FrameStats {
     /// changed (the view when the camera moves, the SH when the environment does).
     size_t environmentBytesUploaded = 0;
     std::vector<PassTiming> passes;
+    /// Textures the frame graph's pool holds after the frame (its targets, and those of passes
+    /// switched off until they have been idle for two frames).
+    size_t transientTextures = 0;
 };
 
 class Renderer {

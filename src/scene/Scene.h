@@ -186,7 +186,7 @@ struct LightInstance {
     glm::vec3 direction{0.0f, 0.0f, -1.0f}; ///< where the light points (local -Z)
 };
 
-/// How a billboard turns to face the camera (the basis formulas are in render/Billboard.h).
+/// How a billboard turns to face the camera (the basis formulas are in shading/Billboard.h).
 enum class BillboardKind : uint32_t {
     PointSprite = 0,   ///< turns about its centre to face the camera, keeping the camera's up
     AxisAligned = 1,   ///< turns about world +Y only (trees, grass)

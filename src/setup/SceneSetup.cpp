@@ -7,7 +7,7 @@
 
 #include "core/Error.h"
 #include "core/Log.h"
-#include "render/CameraExposure.h"
+#include "shading/CameraExposure.h"
 #include "scene/BuiltinScenes.h"
 #include "scene/DemoScenes.h"
 

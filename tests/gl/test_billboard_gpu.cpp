@@ -12,7 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/Program.h"
-#include "render/Billboard.h"
+#include "shading/Billboard.h"
 #include "render/passes/BillboardPass.h"
 #include "render/LightBuffer.h"
 #include "render/Renderer.h"

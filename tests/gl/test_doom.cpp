@@ -12,7 +12,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/Texture.h"
 #include "render/Renderer.h"
-#include "render/Tonemap.h"
+#include "shading/Tonemap.h"
 #include "scene/DemoScenes.h"
 #include "scene/DoomLevel.h"
 #include "scene/Procedural.h"

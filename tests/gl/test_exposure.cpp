@@ -7,9 +7,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/CameraExposure.h"
+#include "shading/CameraExposure.h"
 #include "render/Renderer.h"
-#include "render/Tonemap.h"
+#include "shading/Tonemap.h"
 #include "scene/Procedural.h"
 
 using namespace specula;

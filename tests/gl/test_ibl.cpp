@@ -13,8 +13,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/Brdf.h"
-#include "render/EnvironmentMap.h"
+#include "shading/Brdf.h"
+#include "shading/EnvironmentMap.h"
 #include "render/Renderer.h"
 #include "scene/Procedural.h"
 #include "shaders/shared/EnvironmentData.h"
@@ -233,7 +233,7 @@ scene::MaterialShading materialShading(const BrdfVariant& v)
     return s;
 }
 
-// Directional albedo ∫ f(l, v) (n.l) dω_l of render/Brdf's BRDF at n.v = NoV, per channel,
+// Directional albedo ∫ f(l, v) (n.l) dω_l of shading/Brdf's BRDF at n.v = NoV, per channel,
 // by the midpoint rule in (cos θ_l, φ_l) around n: φ over [0, π], doubled, as the integrand
 // is symmetric about the plane of n and v. A quadrature independent of the GPU's importance
 // sampling; at roughness 0.5 and 1, for every D and G, it agrees with 4x the cells to 1e-5.
@@ -286,7 +286,7 @@ glm::dvec3 sampleGgxHalfVector(double u1, double u2, double alpha, const glm::dv
     return t * (sinT * std::cos(phi)) + b * (sinT * std::sin(phi)) + n * cosT;
 }
 
-// Monte Carlo estimate of ∫ f(l, v) L(l) (n.l) dω_l for render/Brdf's BRDF, with `samples`
+// Monte Carlo estimate of ∫ f(l, v) L(l) (n.l) dω_l for shading/Brdf's BRDF, with `samples`
 // GGX-importance half vectors (a stratified u1 and a golden-ratio u2 lattice): f (n.l) / pdf,
 // pdf = D_GGX (n.h) / (4 v.h), which is also unbiased for the other D (the GGX lobe with the
 // same α has the heavier tails, so D / D_GGX stays below 1.5). L = 1 without a map.
@@ -386,7 +386,7 @@ TEST_F(GlTest, FurnaceMatchesEachBrdfVariantsAlbedo)
     // albedo, which the split sum gives as f0 A + f90 B from the DFG table of the material's own
     // D, G and F. Base colour (1, 0.5, 0) puts A + B, A/2 + B and B (F = none: f0 (A + B)) in
     // the three channels. Every variant is one sphere of the same frame, so each draw must bind
-    // its own table. Expected: the quadrature of render/Brdf's BRDF (directionalAlbedo) at the
+    // its own table. Expected: the quadrature of shading/Brdf's BRDF (directionalAlbedo) at the
     // n.v of sample pixels along a radius, n.v >= 0.15.
     // Tolerance 1.5% + 0.005 L per channel: the RG16F table, its bilinear lookup, 512
     // low-discrepancy samples and the tessellated sphere; measured worst 0.011 L (n.v = 0.2).

@@ -102,6 +102,35 @@ TEST_F(GlTest, PassesOffCostNothing)
     EXPECT_EQ(renderer.readImage().pixels, before.pixels);
 }
 
+TEST_F(GlTest, SwitchedOffPassesGiveTheirTargetsBack)
+{
+    // The frame graph's pool keeps a pass's targets while frames use them and deletes them
+    // once they have been idle for two frames: the plain frame's count comes back.
+    scene::Scene demo = scene::makeDemoScene();
+    render::Renderer renderer;
+    renderer.setScene(demo);
+    const render::View view = render::defaultView(demo, -1, 16.0f / 9.0f);
+    render::FrameSettings plain;
+    plain.width = 160;
+    plain.height = 90;
+    renderer.render(view, plain);
+    const size_t plainTextures = renderer.stats().transientTextures;
+    EXPECT_EQ(plainTextures, 3u) << "msaa colour, msaa depth, ldr colour";
+    renderer.render(view, everything(160, 90, 4));
+    const size_t allTextures = renderer.stats().transientTextures;
+    EXPECT_GT(allTextures, plainTextures + 8) << "ssao's four, bloom's levels, the resolved frame, fxaa's input";
+    renderer.render(view, everything(160, 90, 4));
+    EXPECT_EQ(renderer.stats().transientTextures, allTextures) << "a frame like the last makes nothing new";
+    for (int frame = 0; frame < 3; ++frame) renderer.render(view, plain);
+    EXPECT_EQ(renderer.stats().transientTextures, plainTextures);
+    // A new size: new targets, and the old ones go after their idle frames.
+    plain.width = 200;
+    for (int frame = 0; frame < 4; ++frame) renderer.render(view, plain);
+    EXPECT_EQ(renderer.stats().transientTextures, plainTextures);
+    EXPECT_EQ(renderer.readImage().width, 200);
+    EXPECT_EQ(debug().errorCount(), 0);
+}
+
 TEST_F(GlTest, FxaaSmoothsAliasedEdgesOnly)
 {
     // One sample per pixel: a tilted white square on black has staircase edges. FXAA puts

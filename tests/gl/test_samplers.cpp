@@ -1,6 +1,6 @@
 // Chi-square tests of the importance samplers the bakes use (shaders/ibl/sampling.glsl), run on
 // the GPU as the bakes run them: each half vector sampler must be distributed as D(h) (n·h), the
-// solid-angle density of its normal distribution (render/Brdf, the CPU port), after pbrt-v4's
+// solid-angle density of its normal distribution (shading/Brdf, the CPU port), after pbrt-v4's
 // bsdfs_test.cpp: random ξ, a θ × φ histogram, expected counts from the density integrated
 // over each cell, cells with fewer than 5 expected merged, Šidák-corrected significance 1%.
 #include "GlTestContext.h"
@@ -19,7 +19,7 @@
 
 #include "gl/Program.h"
 #include "gl/Texture.h"
-#include "render/Brdf.h"
+#include "shading/Brdf.h"
 
 using namespace specula;
 using specula::test::GlTest;

@@ -1,5 +1,5 @@
 // GPU against CPU: a sphere lit by one light, read back as floats, each pixel compared with
-// render/Brdf.h evaluated at that pixel's analytic ray-sphere hit.
+// shading/Brdf.h evaluated at that pixel's analytic ray-sphere hit.
 #include "GlTestContext.h"
 
 #include <algorithm>
@@ -8,7 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/Brdf.h"
+#include "shading/Brdf.h"
 #include "render/LightBuffer.h"
 #include "render/Renderer.h"
 #include "scene/DemoScenes.h"
@@ -62,7 +62,7 @@ Result renderAndCompare(const Case& c)
     settings.msaa = 1;
     settings.tonemap = render::Tonemap::None;
     settings.brdfGeometry = c.geometry;
-    settings.energyCompensation = false; // exactly the glTF BRDF, as render/Brdf.cpp evaluates it
+    settings.energyCompensation = false; // exactly the glTF BRDF, as shading/Brdf.cpp evaluates it
     const glm::vec3 eye(0.0f, 0.0f, 4.0f);
     const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
     render::Renderer renderer;
@@ -195,7 +195,7 @@ Case variantBase(const char* name)
 } // namespace
 
 // Every physically based variant (one term changed at a time, on a dielectric and on a
-// metal) against render/Brdf.cpp, pixel by pixel, same tolerance as above.
+// metal) against shading/Brdf.cpp, pixel by pixel, same tolerance as above.
 TEST_F(GlTest, BrdfVariantsMatchCpu)
 {
     std::vector<Case> cases;

@@ -12,7 +12,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/Brdf.h"
+#include "shading/Brdf.h"
 #include "render/GpuScene.h"
 #include "render/Renderer.h"
 #include "scene/DemoScenes.h"

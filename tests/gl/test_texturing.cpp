@@ -6,7 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/Renderer.h"
-#include "render/Tonemap.h"
+#include "shading/Tonemap.h"
 #include "scene/Procedural.h"
 
 using namespace specula;

@@ -8,7 +8,7 @@
 
 #include "core/Error.h"
 #include "render/Renderer.h"
-#include "render/Tonemap.h"
+#include "shading/Tonemap.h"
 #include "scene/Procedural.h"
 
 using namespace specula;

@@ -1,4 +1,4 @@
-// Billboard math (render/Billboard.h): each kind's basis is orthonormal and right-handed and
+// Billboard math (shading/Billboard.h): each kind's basis is orthonormal and right-handed and
 // turns the way it should; degenerate views give finite, steady bases; quads, pixel sizes and
 // the built-in sprites.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/Billboard.h"
+#include "shading/Billboard.h"
 #include "render/passes/BillboardPass.h"
 
 using namespace specula;

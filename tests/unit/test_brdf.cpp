@@ -1,10 +1,10 @@
-// BRDF math on the CPU (render/Brdf.h mirrors shaders/brdf/): normalisation, bounds,
+// BRDF math on the CPU (shading/Brdf.h mirrors shaders/brdf/): normalisation, bounds,
 // Fresnel limits, reciprocity and energy (white furnace).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "render/Brdf.h"
+#include "shading/Brdf.h"
 
 using namespace specula::render::brdf;
 using glm::dvec3;

@@ -1,13 +1,13 @@
-// The BRDF explorer's curves (render/BrdfPlot.h): each term as the material chooses it, equal
-// to direct calls of render/Brdf.h at the same angles, and different from the default BRDF
+// The BRDF explorer's curves (shading/BrdfPlot.h): each term as the material chooses it, equal
+// to direct calls of shading/Brdf.h at the same angles, and different from the default BRDF
 // where the choice matters.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "render/Brdf.h"
-#include "render/BrdfPlot.h"
+#include "shading/Brdf.h"
+#include "shading/BrdfPlot.h"
 
 using namespace specula;
 using render::BrdfCurves;

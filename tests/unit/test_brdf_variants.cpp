@@ -1,4 +1,4 @@
-// The BRDF variants of render/Brdf.h (mirrors of shaders/brdf/): every D normalised, every G
+// The BRDF variants of shading/Brdf.h (mirrors of shaders/brdf/): every D normalised, every G
 // in [0, 1], reciprocity of every combination, closed forms and limits of F and the diffuse
 // models, F0 from an index of refraction.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "render/Brdf.h"
+#include "shading/Brdf.h"
 
 using namespace specula::render::brdf;
 using glm::dvec3;

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "render/ContactSheet.h"
+#include "shading/ContactSheet.h"
 
 using namespace specula;
 

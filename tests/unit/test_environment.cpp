@@ -11,7 +11,7 @@
 
 #include "TestFiles.h"
 #include "gl/Program.h"
-#include "render/EnvironmentMap.h"
+#include "shading/EnvironmentMap.h"
 #include "render/ImageBasedLighting.h"
 
 using namespace specula::render;

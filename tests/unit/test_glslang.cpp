@@ -11,7 +11,7 @@
 
 #include "gl/Program.h"
 #include "gl/ShaderSource.h"
-#include "render/VariantKey.h"
+#include "shading/VariantKey.h"
 
 namespace fs = std::filesystem;
 using specula::gl::loadShaderSource;
@@ -34,7 +34,7 @@ std::vector<Variant> variants()
         if (ext == ".vert" || ext == ".frag" || ext == ".comp")
             out.push_back({fs::relative(entry.path(), specula::gl::shaderRoot()).generic_string(), {}});
     }
-    // The forward pass's variants from its variant key's table (render/VariantKey): every row
+    // The forward pass's variants from its variant key's table (shading/VariantKey): every row
     // alone, every row with image-based light and an occlusion texture, and every flag (the
     // rows that combine freely) together.
     std::vector<std::string> flags;

@@ -1,10 +1,10 @@
-// The forward pass's variant key (render/VariantKey): one table of bits and defines.
+// The forward pass's variant key (shading/VariantKey): one table of bits and defines.
 #include <gtest/gtest.h>
 
 #include <set>
 #include <string>
 
-#include "render/VariantKey.h"
+#include "shading/VariantKey.h"
 #include "shaders/shared/MaterialData.h"
 
 using namespace specula;

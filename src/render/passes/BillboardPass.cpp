@@ -18,7 +18,7 @@
 #include "gl/State.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
-#include "render/Billboard.h"
+#include "shading/Billboard.h"
 #include "render/LightBuffer.h"
 #include "shaders/shared/BillboardData.h"
 #include "shaders/shared/Bindings.h"

@@ -1,7 +1,7 @@
 #pragma once
 // The billboard pass: a scene's billboard groups and the light gizmos, drawn instanced (one
 // draw call per group) into the forward pass's HDR target. The basis is built in the vertex
-// shader (shaders/billboard/basis.glsl) with the formulas of render/Billboard.h.
+// shader (shaders/billboard/basis.glsl) with the formulas of shading/Billboard.h.
 //
 // Order within the forward pass (Renderer::Impl::drawScene):
 //   1. opaque glTF surfaces

@@ -8,7 +8,7 @@
 #include "gl/State.h"
 #include "gl/Texture.h"
 #include "render/FrameContext.h"
-#include "render/Tonemap.h"
+#include "shading/Tonemap.h"
 #include "render/graph/GlGraphBackend.h"
 #include "render/passes/Fullscreen.h"
 #include "scene/DoomPalette.h"

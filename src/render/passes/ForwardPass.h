@@ -7,7 +7,7 @@
 //   3. the skybox (render/passes/SkyboxPass)
 //   4. blended surfaces, back to front (the blended draw list)
 //   5. blended billboards, then the light gizmos
-// It keeps the programs of every variant it has met (keyed by render/VariantKey), and resolves
+// It keeps the programs of every variant it has met (keyed by shading/VariantKey), and resolves
 // each material's program and DFG table once a frame (prepareMaterials) so that no compile or
 // bake lands inside the pass or a draw.
 #include <map>
@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "render/DrawList.h"
-#include "render/VariantKey.h"
+#include "shading/VariantKey.h"
 #include "render/graph/FrameGraph.h"
 #include "render/passes/SkyboxPass.h"
 

@@ -1,4 +1,4 @@
-#include "render/Billboard.h"
+#include "shading/Billboard.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "settings/DebugView.h"
-#include "render/ShadingVariant.h"
+#include "shading/ShadingVariant.h"
 
 namespace specula::render {
 

@@ -1,13 +1,13 @@
 #pragma once
 // The viewer's BRDF explorer as data: one material's reflectance in the plane of incidence
-// against the light's angle, for a fixed view angle, from render/Brdf.h (the CPU port of the
+// against the light's angle, for a fixed view angle, from shading/Brdf.h (the CPU port of the
 // shaders) with the material's own shading model and BRDF terms. Factors only: textures are
 // not sampled.
 #include <vector>
 
 #include <glm/glm.hpp>
 
-#include "render/ShadingVariant.h"
+#include "shading/ShadingVariant.h"
 
 namespace specula::render {
 

@@ -1,4 +1,4 @@
-#include "render/ShadingVariant.h"
+#include "shading/ShadingVariant.h"
 
 namespace specula::render {
 namespace {

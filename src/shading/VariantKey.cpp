@@ -1,4 +1,4 @@
-#include "render/VariantKey.h"
+#include "shading/VariantKey.h"
 
 #include <array>
 

@@ -1,4 +1,4 @@
-#include "render/ContactSheet.h"
+#include "shading/ContactSheet.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "render/Brdf.h"
+#include "shading/Brdf.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
-#include "render/BrdfPlot.h"
+#include "shading/BrdfPlot.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "render/Brdf.h"
+#include "shading/Brdf.h"
 
 namespace specula::render {
 namespace {

@@ -1,4 +1,4 @@
-#include "render/Tonemap.h"
+#include "shading/Tonemap.h"
 
 #include <algorithm>
 #include <cmath>

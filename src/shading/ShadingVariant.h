@@ -1,7 +1,7 @@
 #pragma once
 // A material's shading (scene::MaterialShading) as part of the forward pass's variant key:
 // packed into the high bits of MaterialBinding::features, resolved against the frame's
-// settings; render/VariantKey turns it into the defines of shaders/forward/ and shaders/brdf/.
+// settings; shading/VariantKey turns it into the defines of shaders/forward/ and shaders/brdf/.
 #include <cstdint>
 
 #include "scene/MaterialModel.h"

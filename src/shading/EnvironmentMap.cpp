@@ -1,4 +1,4 @@
-#include "render/EnvironmentMap.h"
+#include "shading/EnvironmentMap.h"
 
 #include <algorithm>
 #include <cmath>

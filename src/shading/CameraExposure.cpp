@@ -1,4 +1,4 @@
-#include "render/CameraExposure.h"
+#include "shading/CameraExposure.h"
 
 #include <algorithm>
 #include <cmath>
