@@ -345,11 +345,6 @@ const GraphTextureDesc& FrameGraph::desc(GraphTexture texture) const
     return mResources.at(texture.id).desc;
 }
 
-const std::string& FrameGraph::name(GraphTexture texture) const
-{
-    return mResources.at(texture.id).name;
-}
-
 std::string FrameGraph::toDot() const
 {
     std::string out = "digraph frame {\n  rankdir=LR;\n  node [fontname=\"sans-serif\", fontsize=10];\n";

@@ -137,7 +137,6 @@ public:
     /// The physical texture of `texture` while its passes run (and after, if exported).
     int physical(GraphTexture texture) const;
     const GraphTextureDesc& desc(GraphTexture texture) const;
-    const std::string& name(GraphTexture texture) const;
     int physical(GraphBuffer buffer) const;
 
     // After compile(): what the graph decided, for tests, stats and --print-graph.
@@ -145,7 +144,6 @@ public:
     const std::vector<uint32_t>& order() const { return mOrder; }
     bool culled(uint32_t pass) const { return mPasses[pass].culled; }
     const std::string& passName(uint32_t pass) const { return mPasses[pass].name; }
-    uint32_t passCount() const { return uint32_t(mPasses.size()); }
     /// Barrier bits issued before pass `pass` runs, and after the last pass (read-backs).
     uint32_t barriersBefore(uint32_t pass) const { return mPasses[pass].barriers; }
     uint32_t finalBarriers() const { return mFinalBarriers; }
