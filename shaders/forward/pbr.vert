@@ -6,9 +6,8 @@
 
 layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
 #if defined(SHADING_GOURAUD)
-// The lights are a storage buffer (lights/light_list.glsl). GL 4.5 does not promise vertex
-// shaders any (its minimum GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS is 0); llvmpipe and the desktop
-// drivers offer them.
+// The lights are read through a buffer texture (lights/light_list.glsl), which every stage
+// may sample (vertex shaders are promised no storage blocks: GL 4.5's minimum is 0).
 #include "../shared/MaterialData.h"
 layout(std140, binding = SPECULA_BINDING_MATERIAL) uniform MaterialBlock { GpuMaterial material; };
 #include "classic_lighting.glsl"

@@ -16,11 +16,28 @@
 #include "../shared/Bindings.h"
 #include "../shared/LightData.h"
 
-// render/LightBuffer: a LightHeader, then header.count.x lights. readonly: no stage writes it.
+// render/LightBuffer: a LightHeader, then header.count.x lights, read two ways. The shading
+// passes read a texel view of the bytes (16 bytes a texel: the header, then four a light): on
+// llvmpipe a texelFetch costs far less than a storage-block read per fragment. A compute pass
+// that defines SPECULA_LIGHTS_STORAGE reads the same bytes as the std430 block. Nothing writes.
+#ifdef SPECULA_LIGHTS_STORAGE
 layout(std430, binding = SPECULA_BINDING_LIGHTS) readonly buffer LightsBlock {
     LightHeader header;
     GpuLight lights[];
 } lightData;
+#else
+layout(binding = SPECULA_UNIT_LIGHTS) uniform usamplerBuffer lightTexels;
+#endif
+
+// Every light of the frame, whatever the shading point (the debug views show the first light).
+uint frameLightCount()
+{
+#ifdef SPECULA_LIGHTS_STORAGE
+    return lightData.header.count.x;
+#else
+    return texelFetch(lightTexels, 0).x;
+#endif
+}
 
 // The lights that may reach a shading point: light indices lightListIndex(list, 0 .. count-1).
 struct LightList {
@@ -32,14 +49,14 @@ struct LightList {
 // (gl_FragCoord: a cluster is a screen tile and a depth slice).
 LightList lightList(vec3 worldPosition, vec4 fragCoord)
 {
-    return LightList(0u, lightData.header.count.x);
+    return LightList(0u, frameLightCount());
 }
 
 // For stages without gl_FragCoord (the Gouraud vertex shader): clustered shading will project
 // `worldPosition` to find its cluster. Today every light, as above.
 LightList lightList(vec3 worldPosition)
 {
-    return LightList(0u, lightData.header.count.x);
+    return LightList(0u, frameLightCount());
 }
 
 // The index in the light buffer of entry `k` (< list.count) of `list`.
@@ -51,11 +68,11 @@ uint lightListIndex(LightList list, uint k)
 // Light `index` of the light buffer (an index from lightListIndex, or < frameLightCount()).
 GpuLight lightAt(uint index)
 {
+#ifdef SPECULA_LIGHTS_STORAGE
     return lightData.lights[index];
-}
-
-// Every light of the frame, whatever the shading point (the debug views show the first light).
-uint frameLightCount()
-{
-    return lightData.header.count.x;
+#else
+    int texel = 1 + 4 * int(index);
+    return GpuLight(uintBitsToFloat(texelFetch(lightTexels, texel)), uintBitsToFloat(texelFetch(lightTexels, texel + 1)),
+                    uintBitsToFloat(texelFetch(lightTexels, texel + 2)), uintBitsToFloat(texelFetch(lightTexels, texel + 3)));
+#endif
 }

@@ -9,7 +9,7 @@
 #define SPECULA_BINDING_ENVIRONMENT 4
 // Storage buffers
 #define SPECULA_BINDING_BILLBOARDS 3
-#define SPECULA_BINDING_LIGHTS 9 // LightHeader + GpuLight[] (shared/LightData.h, lights/light_list.glsl)
+#define SPECULA_BINDING_LIGHTS 9 // LightHeader + GpuLight[] (shared/LightData.h), compute passes' view of it
 // Texture units of the forward pass
 #define SPECULA_UNIT_BASE_COLOR 0
 #define SPECULA_UNIT_METALLIC_ROUGHNESS 1
@@ -27,6 +27,7 @@
 #define SPECULA_UNIT_POST_INPUT_1 1      // a compute pass's second and third inputs
 #define SPECULA_UNIT_POST_INPUT_2 2
 #define SPECULA_IMAGE_POST_OUTPUT 0      // image unit a compute pass writes
+#define SPECULA_UNIT_LIGHTS 10           // the light buffer's texel view (lights/light_list.glsl)
 #define SPECULA_UNIT_SSAO 12             // forward pass: the blurred ambient occlusion
 #define SPECULA_BINDING_SSAO 5           // uniform buffer: SsaoData
 #define SPECULA_BINDING_EXPOSURE_PARAMS 6 // uniform buffer: ExposureParams

@@ -1,8 +1,8 @@
-// Punctual lights (storage buffer, std430, render/LightBuffer). Units as in KHR_lights_punctual:
+// Punctual lights (one buffer, std430 layout, render/LightBuffer). Units as in KHR_lights_punctual:
 // point and spot intensity in candela, directional in lux; colour is a linear RGB tint.
 //
 // The buffer is a LightHeader followed by as many GpuLight records as the header counts: no
-// fixed count (GLSL declares the array runtime-sized, lights/light_list.glsl). Light i lives at
+// fixed count (a runtime-sized array to compute passes, texels to the others: lights/light_list.glsl). Light i lives at
 // byte sizeof(LightHeader) + i * sizeof(GpuLight); both structs hold only vec4s and uvec4s, so
 // std430, std140 and C++ agree on that layout.
 #ifdef __cplusplus

@@ -221,4 +221,11 @@ size_t maxStorageBlockSize()
     return size_t(size);
 }
 
+size_t maxTextureBufferTexels()
+{
+    GLint texels = 65536; // the GL 4.5 minimum
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &texels);
+    return size_t(texels);
+}
+
 } // namespace specula::gl

@@ -116,5 +116,7 @@ void bindStorageBuffer(uint32_t binding, const Buffer& buffer);
 /// GL_MAX_SHADER_STORAGE_BLOCK_SIZE of the current context: the most bytes one storage block
 /// of a shader can reach (128 MiB on llvmpipe).
 size_t maxStorageBlockSize();
+/// GL_MAX_TEXTURE_BUFFER_SIZE of the current context: the most texels a buffer texture views.
+size_t maxTextureBufferTexels();
 
 } // namespace specula::gl

@@ -7,7 +7,9 @@
 #include <cmath>
 
 #include "core/Error.h"
+#include "gl/Buffer.h"
 #include "gl/Debug.h"
+#include "gl/State.h"
 
 namespace specula::gl {
 namespace {
@@ -21,6 +23,7 @@ GLenum glInternalFormat(Format format)
     case Format::SRGB8_ALPHA8: return GL_SRGB8_ALPHA8;
     case Format::R8UI: return GL_R8UI;
     case Format::RG8UI: return GL_RG8UI;
+    case Format::RGBA32UI: return GL_RGBA32UI;
     case Format::R16F: return GL_R16F;
     case Format::RG16F: return GL_RG16F;
     case Format::RGBA16F: return GL_RGBA16F;
@@ -42,6 +45,7 @@ GLenum glTarget(TextureType type)
     case TextureType::Cube: return GL_TEXTURE_CUBE_MAP;
     case TextureType::Texture2DMultisample: return GL_TEXTURE_2D_MULTISAMPLE;
     case TextureType::Texture3D: return GL_TEXTURE_3D;
+    case TextureType::Buffer: return GL_TEXTURE_BUFFER;
     }
     return GL_TEXTURE_2D;
 }
@@ -131,6 +135,8 @@ Texture::Texture(const TextureDesc& desc) : mDesc(desc)
         mDesc.levels = 1;
         glTextureStorage2DMultisample(id, desc.samples, format, desc.width, desc.height, GL_TRUE);
         break;
+    case TextureType::Buffer:
+        throw Error("texture '{}': a buffer texture is made from a gl::Buffer", desc.label);
     }
     if (desc.type != TextureType::Texture2DMultisample) {
         glTextureParameteri(id, GL_TEXTURE_MAX_LEVEL, mDesc.levels - 1);
@@ -145,6 +151,40 @@ Texture::Texture(const TextureDesc& desc) : mDesc(desc)
         glTextureParameteri(id, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
     }
     label(GL_TEXTURE, id, desc.label);
+}
+
+namespace {
+
+int bytesPerTexel(Format format)
+{
+    switch (format) {
+    case Format::R8: case Format::R8UI: return 1;
+    case Format::RG8: case Format::RG8UI: case Format::R16F: return 2;
+    case Format::RGBA8: case Format::SRGB8_ALPHA8: case Format::RG16F: case Format::R32F: return 4;
+    case Format::RGBA16F: case Format::RG32F: return 8;
+    case Format::RGBA32F: case Format::RGBA32UI: return 16;
+    default: return 0; // depth formats: no buffer view
+    }
+}
+
+} // namespace
+
+Texture::Texture(const Buffer& buffer, Format format, const std::string& label)
+{
+    const int texelBytes = bytesPerTexel(format);
+    if (texelBytes == 0 || buffer.size() % size_t(texelBytes) != 0)
+        throw Error("texture '{}': {} bytes are not whole texels of its format", label, buffer.size());
+    const size_t texels = buffer.size() / size_t(texelBytes);
+    const size_t maxTexels = maxTextureBufferTexels();
+    if (texels > maxTexels)
+        throw Error("texture '{}': {} texels, more than a buffer texture holds here ({}, GL_MAX_TEXTURE_BUFFER_SIZE)", label, texels,
+                    maxTexels);
+    mDesc = {.type = TextureType::Buffer, .format = format, .width = int(texels), .height = 1, .levels = 1, .label = label};
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &id);
+    mHandle = Handle<detail::deleteTexture>(id);
+    glTextureBuffer(id, glInternalFormat(format), buffer.id());
+    gl::label(GL_TEXTURE, id, label);
 }
 
 int Texture::width(int level) const
@@ -174,12 +214,12 @@ size_t Texture::planes(int level) const
 
 bool Texture::isInteger() const
 {
-    return mDesc.format == Format::R8UI || mDesc.format == Format::RG8UI;
+    return mDesc.format == Format::R8UI || mDesc.format == Format::RG8UI || mDesc.format == Format::RGBA32UI;
 }
 
 void Texture::upload(int level, int layer, int channels, PixelType type, const void* pixels)
 {
-    assert(level < mDesc.levels);
+    assert(level < mDesc.levels && mDesc.type != TextureType::Buffer);
     const GLuint id = mHandle.get();
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     const GLenum channelsFormat = channelFormat(channels, isInteger());

@@ -9,15 +9,19 @@
 
 namespace specula::gl {
 
+class Buffer;
+
 namespace detail {
 void deleteTexture(uint32_t id);
 }
 
-enum class TextureType { Texture2D, Texture2DArray, Cube, Texture2DMultisample, Texture3D };
+/// Buffer: a view of a gl::Buffer's bytes as texels (GL_TEXTURE_BUFFER, read with texelFetch);
+/// made by Texture(const Buffer&, ...), never uploaded to or read as an image.
+enum class TextureType { Texture2D, Texture2DArray, Cube, Texture2DMultisample, Texture3D, Buffer };
 
 enum class Format {
     R8, RG8, RGBA8, SRGB8_ALPHA8,
-    R8UI, RG8UI, ///< unsigned integers: read with usampler and texelFetch, never filtered
+    R8UI, RG8UI, RGBA32UI, ///< unsigned integers: read with usampler and texelFetch, never filtered
     R16F, RG16F, RGBA16F,
     R32F, RG32F, RGBA32F,
     Depth24, Depth32F, Depth24Stencil8,
@@ -44,6 +48,9 @@ class Texture {
 public:
     Texture() = default;
     explicit Texture(const TextureDesc& desc);
+    /// A texel view of all of `buffer` (GL_TEXTURE_BUFFER) in `format`: width() texels of
+    /// its bytes, in order. The buffer must outlive the view; it is not uploaded to.
+    Texture(const Buffer& buffer, Format format, const std::string& label);
 
     /// Uploads a whole level of one layer (or cube face, 0..5 = +X,-X,+Y,-Y,+Z,-Z; a 3D
     /// texture's whole volume, `layer` ignored). `channels` is 1..4; rows are tightly packed,

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 
 #include "core/Error.h"
 #include "gl/State.h"
@@ -26,10 +27,25 @@ gl::Buffer makeBuffer(size_t capacity)
 
 } // namespace
 
+// The texels of the view: 16 bytes each, the header one, a light four.
+constexpr size_t kTexelBytes = 16;
+static_assert(sizeof(shared::LightHeader) == kTexelBytes && sizeof(shared::GpuLight) == 4 * kTexelBytes);
+
 LightBuffer::LightBuffer()
-    : mBuffer(makeBuffer(kInitialCapacity)), mCapacity(int(kInitialCapacity)),
-      mMaxCount(int(std::min<size_t>((gl::maxStorageBlockSize() - sizeof(shared::LightHeader)) / sizeof(shared::GpuLight), INT32_MAX)))
 {
+    const size_t byStorage = (gl::maxStorageBlockSize() - sizeof(shared::LightHeader)) / sizeof(shared::GpuLight);
+    const size_t byTexels = (gl::maxTextureBufferTexels() - 1) / 4;
+    mMaxCount = int(std::min<size_t>({byStorage, byTexels, INT32_MAX}));
+    allocate(kInitialCapacity);
+}
+
+void LightBuffer::allocate(size_t capacity)
+{
+    if (mTexels) mRetiredTexels = mTexels.id();
+    mTexels = {};
+    mBuffer = makeBuffer(capacity);
+    mTexels = gl::Texture(mBuffer, gl::Format::RGBA32UI, "light texels");
+    mCapacity = int(capacity);
 }
 
 shared::GpuLight LightBuffer::pack(const PlacedLight& placed)
@@ -55,10 +71,7 @@ void LightBuffer::setAll(const std::vector<PlacedLight>& lights)
     size_t capacity = size_t(mCapacity);
     while (capacity < mLights.size()) capacity *= 2;
     capacity = std::min(capacity, std::max(size_t(mMaxCount), size_t(mCapacity))); // doubling never passes the limit
-    if (capacity != size_t(mCapacity)) {
-        mBuffer = makeBuffer(capacity);
-        mCapacity = int(capacity);
-    }
+    if (capacity != size_t(mCapacity)) allocate(capacity);
     // Header and lights in one upload; what lies past the count is never read.
     std::vector<std::byte> bytes(offsetOf(count()));
     const shared::LightHeader header{glm::uvec4(uint32_t(mLights.size()), 0u, 0u, 0u)};
@@ -83,8 +96,12 @@ size_t LightBuffer::offsetOf(int index)
     return sizeof(shared::LightHeader) + size_t(index) * sizeof(shared::GpuLight);
 }
 
-void LightBuffer::bind() const
+void LightBuffer::bind(gl::State& state)
 {
+    // A name GL may hand out again: the binding cache must not take the new view for the old.
+    if (mRetiredTexels) state.forgetTexture(std::exchange(mRetiredTexels, 0u));
+    state.bindTexture(SPECULA_UNIT_LIGHTS, mTexels);
+    state.bindSampler(SPECULA_UNIT_LIGHTS, nullptr);
     gl::bindStorageBuffer(SPECULA_BINDING_LIGHTS, mBuffer);
 }
 

@@ -1,14 +1,23 @@
 #pragma once
-// The punctual lights of a frame in one std430 storage buffer (shaders/shared/LightData.h): a
-// header, then the lights, as many as there are. The buffer grows by doubling its capacity,
-// so a new buffer is made only when the count outgrows it; editing one light rewrites only
-// that light's 64 bytes. Besides memory, the one bound is how many bytes a shader's storage
-// block can reach (GL_MAX_SHADER_STORAGE_BLOCK_SIZE: two million lights on llvmpipe).
+// The punctual lights of a frame in one buffer (shaders/shared/LightData.h): a header, then the
+// lights, as many as there are, laid out as std430 has them. Shaders read it two ways, the same
+// bytes (lights/light_list.glsl): the shading passes through a texel view of it (an RGBA32UI
+// buffer texture, four texels a light: on llvmpipe a storage block read per fragment made lit
+// frames up to twice as slow), compute passes through the std430 storage block. The buffer
+// grows by doubling its capacity, so a new buffer is made only when the count outgrows it;
+// editing one light rewrites only that light's 64 bytes. Besides memory, the bounds are how
+// much a storage block and a buffer texture can reach (GL_MAX_SHADER_STORAGE_BLOCK_SIZE,
+// GL_MAX_TEXTURE_BUFFER_SIZE: two million lights on llvmpipe).
 #include <vector>
 
 #include "gl/Buffer.h"
+#include "gl/Texture.h"
 #include "render/PlacedLight.h"
 #include "shaders/shared/LightData.h"
+
+namespace specula::gl {
+class State;
+}
 
 namespace specula::render {
 
@@ -26,19 +35,26 @@ public:
     int count() const { return int(mLights.size()); }
     /// How many lights the current buffer holds before it must be replaced.
     int capacity() const { return mCapacity; }
-    /// The most lights the GL lets a shader reach in one storage block.
+    /// The most lights the GL lets a shader reach, in a storage block and in a buffer texture.
     int maxCount() const { return mMaxCount; }
     const PlacedLight& light(int index) const { return mLights[size_t(index)]; }
     const std::vector<PlacedLight>& all() const { return mLights; }
     /// Byte offset of light `index` inside the buffer.
     static size_t offsetOf(int index);
     const gl::Buffer& buffer() const { return mBuffer; }
-    void bind() const;
+    /// The texel view of buffer() the shading passes read (RGBA32UI, 1 + 4 × capacity() texels).
+    const gl::Texture& texels() const { return mTexels; }
+    /// Binds the texel view (SPECULA_UNIT_LIGHTS) and the storage block (SPECULA_BINDING_LIGHTS).
+    void bind(gl::State& state);
 
     static shared::GpuLight pack(const PlacedLight& light);
 
 private:
+    void allocate(size_t capacity);
+
     gl::Buffer mBuffer;
+    gl::Texture mTexels;
+    uint32_t mRetiredTexels = 0; ///< the texel view a growth deleted, for gl::State to forget
     int mCapacity = 0;
     int mMaxCount = 0;
     std::vector<PlacedLight> mLights;

@@ -1,15 +1,23 @@
-// Lights in a std430 storage buffer with no fixed count: editing one touches only its bytes,
-// the buffer grows by doubling (a new buffer only when the count outgrows it), and every
-// light of a thousand reaches the shading of every reflection model.
+// Lights in one buffer with no fixed count: editing one touches only its bytes, the buffer
+// grows by doubling (a new buffer only when the count outgrows it), both ways shaders read it
+// (the std430 storage block, the texel view) see every light as packed, and every light of a
+// thousand reaches the shading of every reflection model.
 #include "GlTestContext.h"
+
+#include <epoxy/gl.h>
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <utility>
 
 #include <glm/gtc/constants.hpp>
 
+#include "gl/Program.h"
+#include "gl/State.h"
 #include "render/LightBuffer.h"
+#include "shaders/shared/Bindings.h"
 #include "render/Renderer.h"
 #include "scene/DemoScenes.h"
 #include "scene/Procedural.h"
@@ -122,6 +130,134 @@ TEST_F(GlTest, LightBufferGrowsByDoublingAndHasNoCap)
     // The one bound besides memory: what a shader's storage block reaches, at least 2^24 bytes
     // (GL 4.3's minimum GL_MAX_SHADER_STORAGE_BLOCK_SIZE), a quarter of a million lights.
     EXPECT_GE(lights.maxCount(), int(((1 << 24) - sizeof(shared::LightHeader)) / sizeof(shared::GpuLight)));
+}
+
+namespace {
+
+// A compute program that copies every light, as lights/light_list.glsl reads it, to a storage
+// buffer at binding 0 (a count, then the GpuLights): through the std430 block when `storage`,
+// else through the texel view the shading passes use. Built from a copy of the shader tree.
+gl::Program lightReader(bool storage)
+{
+    namespace fs = std::filesystem;
+    const fs::path root = fs::temp_directory_path() / "specula-light-reader";
+    fs::remove_all(root);
+    fs::copy(gl::shaderRoot(), root, fs::copy_options::recursive);
+    std::ofstream(root / "lights" / "read_lights.comp")
+        << "#version 450 core\n"
+           "layout(local_size_x = 64) in;\n"
+           "#include \"light_list.glsl\"\n"
+           "layout(std430, binding = 0) writeonly buffer Copy { uvec4 count; GpuLight lights[]; } copy;\n"
+           "void main() {\n"
+           "  uint k = gl_GlobalInvocationID.x;\n"
+           "  LightList list = lightList(vec3(0.0));\n"
+           "  if (k == 0u) copy.count = uvec4(frameLightCount(), list.count, 0u, 0u);\n"
+           "  if (k < list.count) copy.lights[k] = lightAt(lightListIndex(list, k));\n"
+           "}\n";
+    std::vector<std::string> defines;
+    if (storage) defines.push_back("SPECULA_LIGHTS_STORAGE");
+    gl::Program program({.compute = "lights/read_lights.comp", .defines = defines, .label = "read lights", .root = root});
+    fs::remove_all(root);
+    return program;
+}
+
+GLint resource(GLuint program, GLenum interface, const char* name, GLenum property)
+{
+    const GLuint index = glGetProgramResourceIndex(program, interface, name);
+    if (index == GL_INVALID_INDEX) return -1;
+    GLint value = -1;
+    glGetProgramResourceiv(program, interface, index, 1, &property, 1, nullptr, &value);
+    return value;
+}
+
+} // namespace
+
+// The storage block as a compute pass compiles it: a LightHeader, then GpuLight records every
+// sizeof(GpuLight) bytes from sizeof(LightHeader), the array runtime-sized; the offsets
+// render::LightBuffer writes at.
+TEST_F(GlTest, LightBufferMatchesGlslStd430Layout)
+{
+    using shared::GpuLight;
+    using shared::LightHeader;
+    const gl::Program program = lightReader(true);
+    const GLuint id = program.id();
+    constexpr GLenum kBlock = GL_SHADER_STORAGE_BLOCK, kVariable = GL_BUFFER_VARIABLE;
+    EXPECT_EQ(resource(id, kBlock, "LightsBlock", GL_BUFFER_BINDING), SPECULA_BINDING_LIGHTS);
+    // A runtime-sized last member counts as one element (GL 4.5, 7.6.2.3).
+    EXPECT_EQ(resource(id, kBlock, "LightsBlock", GL_BUFFER_DATA_SIZE), GLint(sizeof(LightHeader) + sizeof(GpuLight)));
+    EXPECT_EQ(resource(id, kVariable, "LightsBlock.header.count", GL_OFFSET), GLint(offsetof(LightHeader, count)));
+    const struct {
+        const char* name;
+        size_t offset;
+    } members[] = {{"LightsBlock.lights[0].positionRange", offsetof(GpuLight, positionRange)},
+                   {"LightsBlock.lights[0].directionType", offsetof(GpuLight, directionType)},
+                   {"LightsBlock.lights[0].colorIntensity", offsetof(GpuLight, colorIntensity)},
+                   {"LightsBlock.lights[0].spot", offsetof(GpuLight, spot)}};
+    for (const auto& m : members) {
+        EXPECT_EQ(resource(id, kVariable, m.name, GL_OFFSET), GLint(sizeof(LightHeader) + m.offset)) << m.name;
+        EXPECT_EQ(resource(id, kVariable, m.name, GL_TOP_LEVEL_ARRAY_STRIDE), GLint(sizeof(GpuLight))) << m.name;
+        EXPECT_EQ(resource(id, kVariable, m.name, GL_TOP_LEVEL_ARRAY_SIZE), 0) << m.name << ": not runtime-sized";
+    }
+}
+
+// Both read paths return every light exactly as LightBuffer::pack made it, bit for bit, also
+// after the buffer has grown twice (a new buffer and a new texel view each time), and the
+// shading passes read the texel view (pbr and, per vertex, Gouraud).
+TEST_F(GlTest, BothLightReadPathsSeeEveryLightAsPacked)
+{
+    render::LightBuffer lights;
+    gl::State state;
+    const gl::Program readers[] = {lightReader(true), lightReader(false)};
+    for (const int count : {3, 300, 5000}) {
+        std::vector<render::PlacedLight> placed = numberedLights(count);
+        for (int i = 0; i < count; ++i) {
+            placed[size_t(i)].light.color = glm::vec3(0.25f * float(i % 4), 1.0f / float(i + 1), 0.5f);
+            placed[size_t(i)].light.range = float(i % 7);
+            placed[size_t(i)].direction = glm::vec3(std::cos(float(i)), std::sin(float(i)), 0.5f);
+            placed[size_t(i)].light.outerConeAngle = 0.01f * float(i % 50 + 1);
+        }
+        lights.setAll(placed);
+        ASSERT_GE(lights.capacity(), count);
+        EXPECT_EQ(lights.texels().desc().type, gl::TextureType::Buffer);
+        EXPECT_EQ(lights.texels().width(), 1 + 4 * lights.capacity());
+        lights.bind(state);
+        for (const gl::Program& reader : readers) {
+            const bool storage = &reader == &readers[0];
+            SCOPED_TRACE(std::string(storage ? "storage block" : "texel view") + ", " + std::to_string(count) + " lights");
+            const size_t bytes = sizeof(glm::uvec4) + size_t(count) * sizeof(shared::GpuLight);
+            const std::vector<std::byte> poison(bytes, std::byte{0xAB});
+            gl::Buffer copy(bytes, poison.data(), "light copy");
+            gl::bindStorageBuffer(0, copy);
+            state.useProgram(reader);
+            state.dispatchCompute(uint32_t((count + 63) / 64), 1);
+            gl::State::memoryBarrier(gl::Barrier::BufferUpdate);
+            const std::vector<std::byte> got = copy.read(0, bytes);
+            glm::uvec4 header;
+            std::memcpy(&header, got.data(), sizeof header);
+            EXPECT_EQ(header.x, uint32_t(count)) << "frameLightCount";
+            EXPECT_EQ(header.y, uint32_t(count)) << "lightList count";
+            int wrong = 0;
+            for (int i = 0; i < count; ++i) {
+                const shared::GpuLight expected = render::LightBuffer::pack(placed[size_t(i)]);
+                if (std::memcmp(got.data() + sizeof header + size_t(i) * sizeof expected, &expected, sizeof expected) != 0 &&
+                    wrong++ < 3)
+                    ADD_FAILURE() << "light " << i << " reads back different bytes";
+            }
+            EXPECT_EQ(wrong, 0);
+        }
+    }
+    // The shading passes sample the texel view on its unit, Gouraud from its vertex shader.
+    const gl::Program pbr({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag"});
+    const gl::Program gouraud({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = {"SHADING_GOURAUD"}});
+    for (const gl::Program* program : {&pbr, &gouraud}) {
+        EXPECT_EQ(glGetProgramResourceIndex(program->id(), GL_SHADER_STORAGE_BLOCK, "LightsBlock"), GL_INVALID_INDEX);
+        const GLint location = glGetUniformLocation(program->id(), "lightTexels");
+        ASSERT_GE(location, 0);
+        GLint unit = -1;
+        glGetUniformiv(program->id(), location, &unit);
+        EXPECT_EQ(unit, SPECULA_UNIT_LIGHTS);
+    }
+    EXPECT_EQ(resource(gouraud.id(), GL_UNIFORM, "lightTexels", GL_REFERENCED_BY_VERTEX_SHADER), 1);
 }
 
 namespace {

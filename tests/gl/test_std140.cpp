@@ -1,5 +1,5 @@
 // The C++ mirrors of shaders/shared/ agree with the layout the GL compiler gives the blocks:
-// std140 uniform blocks, and the lights' std430 storage buffer.
+// std140 uniform blocks (the lights' std430 buffer: test_lights.cpp).
 #include "GlTestContext.h"
 
 #include <epoxy/gl.h>
@@ -7,7 +7,6 @@
 #include "gl/Program.h"
 #include "shaders/shared/Bindings.h"
 #include "shaders/shared/FrameData.h"
-#include "shaders/shared/LightData.h"
 #include "shaders/shared/MaterialData.h"
 #include "shaders/shared/PostData.h"
 
@@ -75,40 +74,4 @@ TEST_F(GlTest, PostStructsMatchGlslLayout)
     EXPECT_EQ(memberOffset(adapt.id(), GL_UNIFORM, "params.adaptation"), GLint(offsetof(ExposureParams, adaptation)));
     EXPECT_EQ(memberOffset(adapt.id(), GL_UNIFORM, "params.clampEv"), GLint(offsetof(ExposureParams, clampEv)));
     EXPECT_EQ(blockSize(adapt.id(), GL_SHADER_STORAGE_BLOCK, "ExposureBlock"), GLint(sizeof(shared::ExposureState)));
-}
-
-// The light buffer as the compiled shaders see it (lights/light_list.glsl), in the fragment
-// shader and in the Gouraud vertex shader: a LightHeader, then GpuLight records every
-// sizeof(GpuLight) bytes from sizeof(LightHeader), the array runtime-sized; the offsets
-// render::LightBuffer writes at.
-TEST_F(GlTest, LightBufferMatchesGlslStd430Layout)
-{
-    using shared::GpuLight;
-    using shared::LightHeader;
-    const gl::Program pbr({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag"});
-    const gl::Program gouraud({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = {"SHADING_GOURAUD"}});
-    for (const gl::Program* program : {&pbr, &gouraud}) {
-        SCOPED_TRACE(program == &pbr ? "pbr" : "gouraud");
-        const GLuint id = program->id();
-        constexpr GLenum kBlock = GL_SHADER_STORAGE_BLOCK, kVariable = GL_BUFFER_VARIABLE;
-        EXPECT_EQ(glGetProgramResourceIndex(id, GL_UNIFORM_BLOCK, "LightsBlock"), GL_INVALID_INDEX) << "still a uniform block";
-        EXPECT_EQ(resourceProperty(id, kBlock, "LightsBlock", GL_BUFFER_BINDING), SPECULA_BINDING_LIGHTS);
-        // A runtime-sized last member counts as one element (GL 4.5, 7.6.2.3).
-        EXPECT_EQ(blockSize(id, kBlock, "LightsBlock"), GLint(sizeof(LightHeader) + sizeof(GpuLight)));
-        EXPECT_EQ(memberOffset(id, kVariable, "LightsBlock.header.count"), GLint(offsetof(LightHeader, count)));
-        const struct {
-            const char* name;
-            size_t offset;
-        } members[] = {{"LightsBlock.lights[0].positionRange", offsetof(GpuLight, positionRange)},
-                       {"LightsBlock.lights[0].directionType", offsetof(GpuLight, directionType)},
-                       {"LightsBlock.lights[0].colorIntensity", offsetof(GpuLight, colorIntensity)},
-                       {"LightsBlock.lights[0].spot", offsetof(GpuLight, spot)}};
-        for (const auto& m : members) {
-            EXPECT_EQ(memberOffset(id, kVariable, m.name), GLint(sizeof(LightHeader) + m.offset)) << m.name;
-            EXPECT_EQ(resourceProperty(id, kVariable, m.name, GL_TOP_LEVEL_ARRAY_STRIDE), GLint(sizeof(GpuLight))) << m.name;
-            EXPECT_EQ(resourceProperty(id, kVariable, m.name, GL_TOP_LEVEL_ARRAY_SIZE), 0) << m.name << ": not runtime-sized";
-        }
-    }
-    // The Gouraud variant lights in the vertex shader, so that stage reads the buffer too.
-    EXPECT_EQ(resourceProperty(gouraud.id(), GL_SHADER_STORAGE_BLOCK, "LightsBlock", GL_REFERENCED_BY_VERTEX_SHADER), 1);
 }

@@ -179,7 +179,7 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
                 state.bindSampler(SPECULA_UNIT_PREFILTERED, nullptr);
                 stores.environment.bind(SPECULA_BINDING_ENVIRONMENT);
             }
-            stores.lights.bind();
+            stores.lights.bind(state);
             // Doom materials look their colours up in the tables, inline or for the colour-map pass.
             if (doom) doom->bindTables(state);
             if (!stores.scene) return;
