@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Interleaved before/after benchmark: `specula bench` of two builds, alternated over ROUNDS
 # rounds so that both see the same machine load, then each scene's median frame times.
-#   scripts/bench-compare.sh OLD_SPECULA OLD_SHADER_DIR [NEW_SPECULA] [ROUNDS]
+#   [NEW_FLAGS="--shadows off"] scripts/bench-compare.sh OLD_SPECULA OLD_SHADER_DIR [NEW_SPECULA] [ROUNDS]
 # Scenes: learnopengl, learnopengl-ibl, demo (plain), DamagedHelmet with every post pass on.
+# NEW_FLAGS: extra flags for the new build only (a feature the old one lacks, switched off).
 set -u
 OLD="$1"
 OLD_SHADERS="$2"
@@ -13,11 +14,13 @@ OUT="$(mktemp -d)"
 trap 'rm -rf "$OUT"' EXIT
 for round in $(seq "$ROUNDS"); do
   for who in old new; do
-    if [ "$who" = old ]; then bin="$OLD"; shaders="$OLD_SHADERS"; else bin="$NEW"; shaders=""; fi
-    SPECULA_SHADER_DIR="$shaders" "$bin" bench --scene learnopengl learnopengl-ibl demo --frames 15 --warmup 3 \
+    if [ "$who" = old ]; then bin="$OLD"; shaders="$OLD_SHADERS"; flags=""; else bin="$NEW"; shaders=""; flags="${NEW_FLAGS:-}"; fi
+    # shellcheck disable=SC2086 # flags are words
+    SPECULA_SHADER_DIR="$shaders" "$bin" bench --scene learnopengl learnopengl-ibl demo --frames 15 --warmup 3 $flags \
       -o "$OUT/$who-plain-$round.json" >/dev/null 2>&1
+    # shellcheck disable=SC2086
     SPECULA_SHADER_DIR="$shaders" "$bin" bench --scene "$ASSETS/models/DamagedHelmet/DamagedHelmet.glb" --frames 15 --warmup 3 \
-      --bloom on --ssao on --fxaa on --auto-exposure on -o "$OUT/$who-helmet-$round.json" >/dev/null 2>&1
+      --bloom on --ssao on --fxaa on --auto-exposure on $flags -o "$OUT/$who-helmet-$round.json" >/dev/null 2>&1
   done
 done
 python3 - "$OUT" <<'PY'

@@ -33,6 +33,11 @@ void addPostOptions(CLI::App* command, setup::FrameOptions& options)
         },
         options.post);
     command->add_option("--ev100", options.ev100, "physical camera exposure 1 / (1.2 x 2^EV100), times 2^--exposure");
+    command->add_option("--shadow-quality", options.shadowQuality, "shadow map resolution and kernel: low, medium (default), high")
+        ->check(CLI::IsMember({"low", "medium", "high"}));
+    command->add_option("--shadow-filter", options.shadowFilter,
+                        "shadow filter: hard, pcf (default: Vogel-disc PCF), pcss (soft shadows from the light's size)")
+        ->check(CLI::IsMember({"hard", "pcf", "pcss"}));
 }
 
 } // namespace specula::cli

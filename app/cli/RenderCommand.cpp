@@ -71,6 +71,13 @@ int runRender(const RenderArgs& args)
         log::info("first frame {:.0f} ms after start; wrote {} ({}x{}, {} sample{}, {} tone mapping)", firstFrameMs,
                   output.string(), settings.width, settings.height, settings.msaa, settings.msaa == 1 ? "" : "s",
                   render::tonemapName(settings.tonemap));
+    const render::FrameStats::Shadows& shadows = renderer.stats().shadows;
+    if (shadows.lights > 0 || shadows.dropped > 0)
+        log::info("shadows: {} light{} with a map, {} view{} in a {}² atlas{}", shadows.lights, shadows.lights == 1 ? "" : "s",
+                  shadows.views, shadows.views == 1 ? "" : "s", shadows.atlasSize,
+                  shadows.dropped > 0 ? fmt::format("; {} casting light{} left without one (over --shadows-max-lights or no room)",
+                                                    shadows.dropped, shadows.dropped == 1 ? "" : "s")
+                                      : std::string());
     if (args.stats) {
         // After the written frame, so its start-up figure is unchanged; the first timed frame
         // would include shader compilation, so one untimed frame goes first.

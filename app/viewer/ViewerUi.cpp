@@ -84,6 +84,9 @@ void statisticsPanel(Viewer& viewer)
     ImGui::PlotLines("frame ms", viewer.frameTimes.data(), int(viewer.frameTimes.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 50));
     const render::FrameStats& stats = viewer.renderer().stats();
     ImGui::Text("%d draw calls, %zu triangles", stats.drawCalls, stats.triangles);
+    if (stats.shadows.lights > 0 || stats.shadows.dropped > 0)
+        ImGui::Text("shadows: %d lights, %d views (%d drawn, %d kept), %d left out", stats.shadows.lights, stats.shadows.views,
+                    stats.shadows.rendered, stats.shadows.cached, stats.shadows.dropped);
     ImGui::Checkbox("GPU timing per pass", &viewer.gpuTiming);
     double total = 0.0;
     for (const render::PassTiming& pass : stats.passes) {
@@ -160,6 +163,16 @@ void lightsPanel(Viewer& viewer)
             l.light.outerConeAngle = glm::radians(outer);
             changed = true;
         }
+    }
+    changed |= ImGui::Checkbox("casts shadows", &l.light.castShadows);
+    if (l.light.type == scene::Light::Type::Directional) {
+        float diameter = glm::degrees(l.light.angularDiameter);
+        if (ImGui::SliderFloat("angular diameter", &diameter, 0.0f, 10.0f, "%.2f deg")) {
+            l.light.angularDiameter = glm::radians(diameter);
+            changed = true;
+        }
+    } else {
+        changed |= ImGui::SliderFloat("radius (soft shadows)", &l.light.radius, 0.0f, 2.0f, "%.3f m");
     }
     if (changed) guarded(viewer, [&] { viewer.editLight(i, l); });
     const LightUpload& u = viewer.lastLightUpload();
@@ -412,9 +425,19 @@ void postPanel(Viewer& viewer)
     ImGui::Checkbox("energy compensation", &s.energyCompensation);
     bool first = true;
     forEachPass([&](auto& pass) { passWidgets(pass, std::exchange(first, false)); }, s);
+    if (ImGui::BeginCombo("shadow quality", shadowQualityName(s.shadows.quality))) {
+        for (auto q : {ShadowQuality::Low, ShadowQuality::Medium, ShadowQuality::High})
+            if (ImGui::Selectable(shadowQualityName(q), q == s.shadows.quality)) s.shadows.quality = q;
+        ImGui::EndCombo();
+    }
+    if (ImGui::BeginCombo("shadow filter", shadowFilterName(s.shadows.filter))) {
+        for (auto f : {ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Pcss})
+            if (ImGui::Selectable(shadowFilterName(f), f == s.shadows.filter)) s.shadows.filter = f;
+        ImGui::EndCombo();
+    }
     if (ImGui::BeginCombo("debug view", debugViewName(s.debugView))) {
         // Every view up to the last one (BrdfF), material inputs and BRDF terms included.
-        for (int k = 0; k <= int(DebugView::BrdfF); ++k) {
+        for (int k = 0; k <= int(DebugView::Cascades); ++k) {
             const auto d = DebugView(k);
             if (ImGui::Selectable(debugViewName(d), d == s.debugView)) s.debugView = d;
         }

@@ -1,6 +1,6 @@
 // The reflection models before physically based shading, shared by the forward pass's
 // fragment shader (flat, Phong, Blinn-Phong) and vertex shader (Gouraud). The includer
-// declares the material block (material); the lights come from lights/light_list.glsl.
+// declares the frame and material blocks (frame, material); the lights come from lights/light_list.glsl.
 //
 // Phong 1975, "Illumination for Computer Generated Pictures": I = ka Ia + kd (N·L) Il +
 // ks (R·V)^n Il. Blinn 1977, "Models of Light Reflection for Computer Synthesized Pictures":
@@ -33,10 +33,11 @@ void classicLighting(LightList list, vec3 p, vec3 n, vec3 v, float shininess, bo
     for (uint k = 0u; k < list.count; ++k) {
         uint index = lightListIndex(list, k);
         vec3 l;
-        vec3 illuminance = lightIlluminance(lightAt(index), p, l);
+        GpuLight light = lightAt(index);
+        vec3 illuminance = lightIlluminance(light, p, l);
         float NoL = dot(n, l);
         if (NoL <= 0.0) continue; // no highlight on the unlit side (Phong 1975)
-        illuminance *= shadowVisibility(index, p, n);
+        illuminance *= shadowVisibility(light, p, n, l);
         float lobe = blinn ? saturate(dot(n, normalize(l + v))) : saturate(dot(reflect(-l, n), v));
         diffuse += illuminance * (NoL * INV_PI);
         specular += illuminance * (pow(lobe, shininess) * INV_PI);

@@ -7,7 +7,7 @@
 
 #if defined(DEBUG_VIEW_BASE_COLOR) || defined(DEBUG_VIEW_NORMAL) || defined(DEBUG_VIEW_ROUGHNESS) || \
     defined(DEBUG_VIEW_METALLIC) || defined(DEBUG_VIEW_OCCLUSION) || defined(DEBUG_VIEW_EMISSIVE) || \
-    defined(DEBUG_VIEW_BRDF_D) || defined(DEBUG_VIEW_BRDF_G) || defined(DEBUG_VIEW_BRDF_F)
+    defined(DEBUG_VIEW_BRDF_D) || defined(DEBUG_VIEW_BRDF_G) || defined(DEBUG_VIEW_BRDF_F) || defined(DEBUG_VIEW_CASCADES)
 #define DEBUG_VIEW
 #endif
 
@@ -53,6 +53,20 @@ vec3 debugViewValue(vec3 baseColor, float metallic, float perceptualRoughness, v
     return debugBytes(vec3(occlusion));
 #elif defined(DEBUG_VIEW_EMISSIVE)
     return emissive;
+#elif defined(DEBUG_VIEW_CASCADES)
+    // The first directional light with cascades: its cascade's colour, darkened in its shadow;
+    // grey beyond the shadow distance or without one.
+    for (uint i = 0u; i < frameLightCount(); ++i) {
+        GpuLight light = lightAt(i);
+        int cascade = shadowCascade(light, vWorldPosition);
+        if (cascade == -2) continue;
+        if (cascade < 0) return debugBytes(vec3(0.5));
+        const vec3 colors[4] = vec3[4](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0), vec3(1.0, 1.0, 0.25));
+        vec3 l = -light.directionType.xyz;
+        float lit = dot(n, l) > 0.0 ? shadowVisibility(light, vWorldPosition, n, l) : 0.0;
+        return debugBytes(colors[cascade] * (0.35 + 0.65 * lit));
+    }
+    return debugBytes(vec3(0.5));
 #else
     return debugBytes(debugBrdfTerm(baseColor, metallic, perceptualRoughness, n, v));
 #endif

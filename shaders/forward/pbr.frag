@@ -12,12 +12,13 @@
 #include "../brdf/brdf.glsl"
 #include "../lights/light_list.glsl"
 #include "../lights/punctual.glsl"
-#include "../lights/shadow.glsl"
 #if defined(IBL)
 #include "../ibl/ibl.glsl"
 #endif
 
 layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
+#define SPECULA_FRAGMENT_STAGE
+#include "../lights/shadow.glsl"
 layout(std140, binding = SPECULA_BINDING_MATERIAL) uniform MaterialBlock { GpuMaterial material; };
 
 layout(binding = SPECULA_UNIT_BASE_COLOR) uniform sampler2D uBaseColorTexture;
@@ -167,10 +168,11 @@ void main()
     for (uint k = 0u; k < list.count; ++k) {
         uint index = lightListIndex(list, k);
         vec3 l;
-        vec3 illuminance = lightIlluminance(lightAt(index), vWorldPosition, l);
+        GpuLight light = lightAt(index);
+        vec3 illuminance = lightIlluminance(light, vWorldPosition, l);
         float NoL = dot(n, l);
         if (NoL <= 0.0) continue;
-        illuminance *= shadowVisibility(index, vWorldPosition, n);
+        illuminance *= shadowVisibility(light, vWorldPosition, n, l);
         vec3 diffuse, specular;
         evaluateBrdfLobes(surface, n, v, l, diffuse, specular);
         color += (diffuse + specular * energyCompensation) * illuminance * NoL;

@@ -1,6 +1,7 @@
 #version 450 core
 // Forward pass vertex shader: world-space position, normal and tangent for lighting. With
-// SHADING_GOURAUD it also lights each vertex (Gouraud 1971) with the Phong model.
+// SHADING_GOURAUD it also lights each vertex (Gouraud 1971) with the Phong model; with SHADOW_PASS
+// it projects into a light's shadow view instead of the camera's.
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
 
@@ -24,6 +25,9 @@ layout(location = SPECULA_ATTRIB_COLOR) in vec4 aColor;
 
 uniform mat4 uModel;
 uniform mat3 uNormalMatrix;
+#if defined(SHADOW_PASS)
+uniform mat4 uShadowViewProjection; // the light's view (render/passes/ShadowPass)
+#endif
 
 out vec3 vWorldPosition;
 out vec3 vNormal;
@@ -41,7 +45,11 @@ void main()
     vUv0 = aUv0;
     vUv1 = aUv1;
     vColor = aColor;
+#if defined(SHADOW_PASS)
+    gl_Position = uShadowViewProjection * world;
+#else
     gl_Position = frame.viewProjection * world;
+#endif
 #if defined(SHADING_GOURAUD)
     // Roughness without its texture: a vertex has no texel of its own.
     float perceptualRoughness = clamp(material.params.y, 0.045, 1.0);

@@ -27,6 +27,9 @@
 #define SPECULA_UNIT_POST_INPUT_1 1      // a compute pass's second and third inputs
 #define SPECULA_UNIT_POST_INPUT_2 2
 #define SPECULA_IMAGE_POST_OUTPUT 0      // image unit a compute pass writes
+#define SPECULA_UNIT_SHADOW_ATLAS 5      // depth atlas with a comparison sampler (lights/shadow.glsl)
+#define SPECULA_UNIT_SHADOW_DEPTH 6      // the same atlas, raw depths (PCSS blocker search)
+#define SPECULA_UNIT_SHADOW_RECORDS 7    // shadow records, RGBA32F buffer texture (shared/ShadowData.h)
 #define SPECULA_UNIT_LIGHTS 10           // the light buffer's texel view (lights/light_list.glsl)
 #define SPECULA_UNIT_SSAO 12             // forward pass: the blurred ambient occlusion
 #define SPECULA_BINDING_SSAO 5           // uniform buffer: SsaoData

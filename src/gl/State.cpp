@@ -22,6 +22,7 @@ void State::reset()
     mSamplers.fill(~0u);
     mImages.fill({});
     mViewport = {-1, -1, -1, -1};
+    mScissor = {-1, -1, -1, -1};
     mPipelineKnown = false;
     // Reversed or odd state from other code would silently change our results.
     glDisable(GL_SCISSOR_TEST);
@@ -142,6 +143,22 @@ void State::viewport(int x, int y, int width, int height)
     }
 }
 
+void State::scissor(int x, int y, int width, int height)
+{
+    const std::array<int, 4> r{x, y, width, height};
+    if (r == mScissor) return;
+    if (mScissor[2] < 0) glEnable(GL_SCISSOR_TEST);
+    mScissor = r;
+    glScissor(x, y, width, height);
+}
+
+void State::noScissor()
+{
+    if (mScissor[2] < 0) return;
+    mScissor = {-1, -1, -1, -1};
+    glDisable(GL_SCISSOR_TEST);
+}
+
 void State::apply(const PipelineDesc& p)
 {
     if (mPipelineKnown && p == mPipeline) return;
@@ -183,6 +200,14 @@ void State::apply(const PipelineDesc& p)
     if (first || p.framebufferSrgb != mPipeline.framebufferSrgb)
         p.framebufferSrgb ? glEnable(GL_FRAMEBUFFER_SRGB) : glDisable(GL_FRAMEBUFFER_SRGB);
     if (first || p.frontFaceClockwise != mPipeline.frontFaceClockwise) glFrontFace(p.frontFaceClockwise ? GL_CW : GL_CCW);
+    if (first || p.depthBiasSlope != mPipeline.depthBiasSlope || p.depthBiasConstant != mPipeline.depthBiasConstant) {
+        if (p.depthBiasSlope != 0.0f || p.depthBiasConstant != 0.0f) {
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glPolygonOffset(p.depthBiasSlope, p.depthBiasConstant);
+        } else {
+            glDisable(GL_POLYGON_OFFSET_FILL);
+        }
+    }
     mPipeline = p;
     mPipelineKnown = true;
 }

@@ -42,6 +42,10 @@ struct PipelineDesc {
     BlendMode blend = BlendMode::None;
     bool frontFaceClockwise = false; ///< for mirrored (negative determinant) transforms
     bool framebufferSrgb = false;    ///< encode to sRGB when writing sRGB targets
+    /// Depth offset of filled triangles (glPolygonOffset: slope × max depth slope + constant ×
+    /// the depth format's smallest step), e.g. a shadow map's slope-scaled bias. 0, 0 = none.
+    float depthBiasSlope = 0.0f;
+    float depthBiasConstant = 0.0f;
     bool operator==(const PipelineDesc&) const = default;
 };
 
@@ -56,6 +60,9 @@ public:
     /// nullptr binds the default framebuffer.
     void bindFramebuffer(const Framebuffer* framebuffer);
     void viewport(int x, int y, int width, int height);
+    /// Limits drawing and clears to a rectangle (glScissor); noScissor() lifts it (the default).
+    void scissor(int x, int y, int width, int height);
+    void noScissor();
     void apply(const PipelineDesc& pipeline);
 
     /// Forgets the cache and restores GL defaults this class relies on (after third-party GL
@@ -100,6 +107,7 @@ private:
     };
     std::array<ImageBinding, kImageUnits> mImages{};
     std::array<int, 4> mViewport{-1, -1, -1, -1};
+    std::array<int, 4> mScissor{-1, -1, -1, -1}; ///< width < 0: off
     PipelineDesc mPipeline;
     bool mPipelineKnown = false;
     int mDrawCalls = 0;

@@ -281,6 +281,10 @@ Sampler::Sampler(const SamplerDesc& desc, std::string_view name) : mDesc(desc)
     glSamplerParameteri(id, GL_TEXTURE_WRAP_T, glWrap(desc.wrapT));
     glSamplerParameteri(id, GL_TEXTURE_WRAP_R, glWrap(desc.wrapR));
     if (desc.maxAnisotropy > 1.0f) glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY, desc.maxAnisotropy);
+    if (desc.compareDepth) {
+        glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    }
     label(GL_SAMPLER, id, name);
 }
 

@@ -94,6 +94,9 @@ struct SamplerDesc {
     Wrap wrapT = Wrap::Repeat;
     Wrap wrapR = Wrap::Repeat;
     float maxAnisotropy = 1.0f;
+    /// Depth textures: sampled through sampler2DShadow, each tap compared with the reference
+    /// (lit when reference ≤ stored depth) and, with Linear, the four results filtered.
+    bool compareDepth = false;
     bool operator==(const SamplerDesc&) const = default;
 };
 

@@ -30,6 +30,7 @@ DrawList DrawList::build(const GpuScene& scene, const glm::mat4& view, const glm
         const GpuPrimitive& p = scene.primitives()[size_t(item.primitive)];
         const bool blended = scene.materials()[size_t(p.material)].alphaMode == scene::AlphaMode::Blend;
         if (blended != (filter == DrawFilter::Blended)) continue;
+        if (filter == DrawFilter::ShadowCasters && !item.castShadows) continue;
         if (!frustum.intersects(p.bounds.transformed(item.world))) continue;
         const glm::vec3 center = glm::vec3(item.world * glm::vec4(p.bounds.center(), 1.0f));
         // View-space z: negative in front of the camera, most negative farthest.
@@ -67,8 +68,10 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
         }
         state.useProgram(*program.program);
         gl::PipelineDesc pipeline;
-        pipeline.cull = m.doubleSided ? gl::CullMode::None : gl::CullMode::Back;
+        pipeline.cull = m.doubleSided || options.shadowCasters ? gl::CullMode::None : gl::CullMode::Back;
         pipeline.frontFaceClockwise = item.mirrored;
+        pipeline.depthBiasSlope = options.depthBiasSlope;
+        pipeline.depthBiasConstant = options.depthBiasConstant;
         if (blendDraws) {
             pipeline.blend = gl::BlendMode::Alpha;
             pipeline.noDepthWrite = true;
@@ -90,6 +93,7 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
         }
         program.program->set(program.model, item.world);
         program.program->set(program.normalMatrix, item.normalMatrix);
+        if (program.receiveShadows >= 0) program.program->set(program.receiveShadows, item.receiveShadows ? 1 : 0);
         if (p.material != boundMaterial) {
             gl::bindUniformBufferRange(SPECULA_BINDING_MATERIAL, scene.materialBuffer(), scene.materialOffset(p.material),
                                        sizeof(shared::GpuMaterial));

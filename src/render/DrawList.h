@@ -25,8 +25,9 @@ struct DrawItem;
 struct GpuPrimitive;
 
 enum class DrawFilter : uint8_t {
-    Opaque,  ///< opaque and alpha-masked surfaces
-    Blended, ///< alpha-blended surfaces
+    Opaque,        ///< opaque and alpha-masked surfaces
+    Blended,       ///< alpha-blended surfaces
+    ShadowCasters, ///< opaque and alpha-masked surfaces that cast shadows (blended ones do not)
 };
 
 struct DrawCommand {
@@ -42,6 +43,7 @@ struct DrawProgram {
     int model = -1;
     int normalMatrix = -1;
     const gl::Texture* dfg = nullptr;
+    int receiveShadows = -1; ///< uReceiveShadows, set per draw from its DrawItem when present
 };
 
 /// How a pass's draws bind their material.
@@ -58,6 +60,11 @@ struct SubmitOptions {
     /// Textures bound where a material has none, for MaterialTextures::All.
     const gl::Texture* white = nullptr;
     const gl::Texture* flatNormal = nullptr;
+    /// A shadow pass: every face drawn (so that open and double-sided meshes cast from either
+    /// side), with this slope-scaled and constant depth bias.
+    bool shadowCasters = false;
+    float depthBiasSlope = 0.0f;
+    float depthBiasConstant = 0.0f;
 };
 
 class DrawList {

@@ -32,6 +32,9 @@ struct FrameStores {
     gl::VertexArray emptyVertexArray{"fullscreen triangle"};
     gl::Texture white;
     gl::Texture flatNormal;
+    /// Changes whenever what casts shadows may have changed (a new scene, an edited material):
+    /// shadow maps drawn before it are stale.
+    uint64_t casterVersion = 0;
     FrameStores();
     ~FrameStores();
 };

@@ -195,9 +195,14 @@ GpuScene::GpuScene(const scene::Scene& scene)
             item.world = instance.world;
             item.normalMatrix = glm::transpose(glm::inverse(glm::mat3(instance.world)));
             item.mirrored = glm::determinant(glm::mat3(instance.world)) < 0.0f;
+            item.castShadows = instance.castShadows;
+            item.receiveShadows = instance.receiveShadows;
             mDraws.push_back(item);
             const GpuPrimitive& p = mPrimitives[size_t(primitive)];
             mTriangles += p.count / 3;
+            const scene::Bounds world = p.bounds.transformed(item.world);
+            mBounds.extend(world);
+            if (item.castShadows && mMaterials[size_t(p.material)].alphaMode != scene::AlphaMode::Blend) mCasterBounds.extend(world);
         }
     }
     log::debug("GPU scene: {} primitives, {} draws, {} materials, {} triangles", mPrimitives.size(), mDraws.size(),

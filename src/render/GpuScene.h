@@ -36,6 +36,8 @@ struct DrawItem {
     glm::mat4 world{1.0f};
     glm::mat3 normalMatrix{1.0f};
     bool mirrored = false; ///< negative determinant: front faces wind clockwise
+    bool castShadows = true;
+    bool receiveShadows = true;
 };
 
 class GpuScene {
@@ -49,6 +51,9 @@ public:
     /// Byte offset of material `index`'s record (records are aligned for uniform block ranges).
     size_t materialOffset(int index) const { return size_t(index) * mMaterialStride; }
     size_t triangleCount() const { return mTriangles; }
+    /// World bounds of every draw, and of those that cast shadows.
+    const scene::Bounds& bounds() const { return mBounds; }
+    const scene::Bounds& casterBounds() const { return mCasterBounds; }
 
     /// Scene materials plus the default one (last); records beyond them are per-primitive
     /// copies (vertex colours) that follow their material.
@@ -79,6 +84,7 @@ private:
     std::vector<gl::Sampler> mSamplers;
     gl::Sampler mDefaultSampler;
     size_t mTriangles = 0;
+    scene::Bounds mBounds, mCasterBounds;
     size_t mTextureBytes = 0;
 };
 

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <cstddef>
 #include <cstring>
 #include <utility>
 
@@ -48,7 +49,7 @@ void LightBuffer::allocate(size_t capacity)
     mCapacity = int(capacity);
 }
 
-shared::GpuLight LightBuffer::pack(const PlacedLight& placed)
+shared::GpuLight LightBuffer::pack(const PlacedLight& placed, int shadowSlot)
 {
     const scene::Light& l = placed.light;
     shared::GpuLight gpu{};
@@ -59,7 +60,7 @@ shared::GpuLight LightBuffer::pack(const PlacedLight& placed)
     // KHR_lights_punctual: 1e-3 keeps inner == outer from dividing by zero (a hard edge).
     const float cosOuter = std::cos(l.outerConeAngle);
     const float scale = 1.0f / std::max(std::cos(l.innerConeAngle) - cosOuter, 1e-3f);
-    gpu.spot = glm::vec4(scale, -cosOuter * scale, 0.0f, 0.0f);
+    gpu.spot = glm::vec4(scale, -cosOuter * scale, float(shadowSlot + 1), 0.0f);
     return gpu;
 }
 
@@ -68,6 +69,7 @@ void LightBuffer::setAll(const std::vector<PlacedLight>& lights)
     if (lights.size() > size_t(mMaxCount))
         throw Error("{} lights: a shader's storage block holds at most {} here (GL_MAX_SHADER_STORAGE_BLOCK_SIZE)", lights.size(), mMaxCount);
     mLights = lights;
+    mShadowSlots.assign(mLights.size(), -1);
     size_t capacity = size_t(mCapacity);
     while (capacity < mLights.size()) capacity *= 2;
     capacity = std::min(capacity, std::max(size_t(mMaxCount), size_t(mCapacity))); // doubling never passes the limit
@@ -87,8 +89,17 @@ void LightBuffer::set(int index, const PlacedLight& light)
 {
     assert(index >= 0 && index < count());
     mLights[size_t(index)] = light;
-    const shared::GpuLight gpu = pack(light);
+    const shared::GpuLight gpu = pack(light, mShadowSlots[size_t(index)]);
     mBuffer.update(offsetOf(index), sizeof gpu, &gpu);
+}
+
+void LightBuffer::setShadowSlot(int index, int slot)
+{
+    assert(index >= 0 && index < count());
+    if (mShadowSlots[size_t(index)] == slot) return;
+    mShadowSlots[size_t(index)] = slot;
+    const shared::GpuLight gpu = pack(mLights[size_t(index)], slot);
+    mBuffer.update(offsetOf(index) + offsetof(shared::GpuLight, spot), sizeof gpu.spot, &gpu.spot);
 }
 
 size_t LightBuffer::offsetOf(int index)

@@ -47,7 +47,12 @@ public:
     /// Binds the texel view (SPECULA_UNIT_LIGHTS) and the storage block (SPECULA_BINDING_LIGHTS).
     void bind(gl::State& state);
 
-    static shared::GpuLight pack(const PlacedLight& light);
+    /// Gives light `index` shadow record `slot` (render/passes/ShadowPass; -1 = none): uploads
+    /// its 16-byte spot field, and only when the slot changes. setAll() clears every slot.
+    void setShadowSlot(int index, int slot);
+    int shadowSlot(int index) const { return mShadowSlots[size_t(index)]; }
+
+    static shared::GpuLight pack(const PlacedLight& light, int shadowSlot = -1);
 
 private:
     void allocate(size_t capacity);
@@ -58,6 +63,7 @@ private:
     int mCapacity = 0;
     int mMaxCount = 0;
     std::vector<PlacedLight> mLights;
+    std::vector<int> mShadowSlots;
 };
 
 /// The scene's lights in world space.

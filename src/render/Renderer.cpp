@@ -167,6 +167,7 @@ void Renderer::setScene(const scene::Scene& scene)
 {
     mImpl->stores.state.reset(); // textures and vertex arrays are replaced: forget cached bindings
     mImpl->stores.scene = std::make_unique<GpuScene>(scene);
+    ++mImpl->stores.casterVersion;
     mImpl->passes.billboards.setScene(scene);
     mImpl->stores.lights.setAll(placeLights(scene));
 }
@@ -383,6 +384,7 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
 {
     if (material < 0 || material >= materialCount()) return;
     GpuScene& gpu = *mImpl->stores.scene;
+    ++mImpl->stores.casterVersion; // a masked material's alpha or cutoff changes its shadow
     using shared::GpuMaterial;
     // Each parameter is a run of floats inside one vec4 of the record.
     auto write = [&](size_t vectorOffset, int first, int count) {

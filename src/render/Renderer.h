@@ -80,6 +80,8 @@ struct FrameSettings {
     /// then × 2^exposureEv as compensation. Unset: no camera, only 2^exposureEv. Ignored while
     /// autoExposure is on (it measures its own EV100). See docs/units.md.
     std::optional<float> ev100;
+    /// Shadow maps (settings/PassSettings.h), on by default.
+    ShadowSettings shadows;
     // Post-processing (settings/PassSettings.h): each off by default and then free.
     BloomSettings bloom;
     SsaoSettings ssao;
@@ -113,6 +115,18 @@ struct FrameStats {
     /// Textures the frame graph's pool holds after the frame (its targets, and those of passes
     /// switched off until they have been idle for two frames).
     size_t transientTextures = 0;
+    /// Shadow maps of the frame: lights with a map, their views (cascades, a spot's one, a
+    /// point light's six faces), how many of those were rendered this frame and how many kept
+    /// from an earlier frame (nothing in them changed), and the casting lights left without a
+    /// map (over the budget, or no room in the atlas).
+    struct Shadows {
+        int lights = 0;
+        int views = 0;
+        int rendered = 0;
+        int cached = 0;
+        int dropped = 0;
+        int atlasSize = 0;
+    } shadows;
 };
 
 class Renderer {

@@ -225,7 +225,9 @@ Scene makeLearnOpenGlScene(float sphereZ, const char* name)
         lamp.baseColorFactor = glm::vec4(1.0f);
         lamp.metallicFactor = 0.0f;
         lamp.roughnessFactor = 0.5f;
-        addShape(scene, sphere, lamp, glm::scale(glm::translate(glm::mat4(1.0f), p), glm::vec3(0.5f)), "light sphere");
+        const int lampNode = addShape(scene, sphere, lamp, glm::scale(glm::translate(glm::mat4(1.0f), p), glm::vec3(0.5f)), "light sphere");
+        // A marker around the light, as in the tutorial: it must not hide its own light.
+        scene.nodes[size_t(lampNode)].castShadows = false;
     }
     Camera camera;
     camera.yfov = glm::radians(45.0f);

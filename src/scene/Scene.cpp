@@ -135,7 +135,8 @@ std::vector<MeshInstance> Scene::meshInstances() const
 {
     std::vector<MeshInstance> out;
     walk(*this, [&](int index, const Node& node, const glm::mat4& world) {
-        if (node.mesh >= 0 && size_t(node.mesh) < meshes.size()) out.push_back({node.mesh, index, world});
+        if (node.mesh >= 0 && size_t(node.mesh) < meshes.size())
+            out.push_back({node.mesh, index, world, node.castShadows, node.receiveShadows});
     });
     return out;
 }

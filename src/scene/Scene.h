@@ -153,6 +153,12 @@ struct Light {
     float range = 0.0f;          ///< 0 = infinite
     float innerConeAngle = 0.0f; ///< radians
     float outerConeAngle = glm::radians(45.0f);
+    /// Shadows (render/passes/ShadowPass). A light's size sets the width of its soft shadows
+    /// (PCSS): the radius of a point or spot light's sphere, the angular diameter of a
+    /// directional light's disc. glTF lights have no size: 5 cm and the sun's 0.53° by default.
+    bool castShadows = true;
+    float radius = 0.05f;                          ///< metres (point, spot)
+    float angularDiameter = glm::radians(0.53f);   ///< radians (directional)
 };
 
 struct Node {
@@ -165,6 +171,10 @@ struct Node {
     int camera = -1;
     int light = -1;
     std::vector<int> children;
+    /// Its mesh casts shadows, and receives them (the scene file's castShadows and
+    /// receiveShadows of a model or shape, set on each of its nodes).
+    bool castShadows = true;
+    bool receiveShadows = true;
     glm::mat4 localMatrix() const;
 };
 
@@ -173,6 +183,8 @@ struct MeshInstance {
     int mesh = -1;
     int node = -1;
     glm::mat4 world{1.0f};
+    bool castShadows = true;
+    bool receiveShadows = true;
 };
 struct CameraInstance {
     int camera = -1;

@@ -149,12 +149,13 @@ SceneDocument loadSceneFile(const fs::path& path)
     Scene& scene = document.scene;
     scene.name = path.stem().string();
 
-    for (const Object& model : root.objects("models", withTransform({"path", "name", "materials"}))) parseModel(model, scene, directory);
+    for (const Object& model : root.objects("models", withTransform({"path", "name", "materials", "castShadows", "receiveShadows"}))) parseModel(model, scene, directory);
     const auto shapes = root.objects("shapes", withTransform({"type", "name", "radius", "segments", "rings", "halfExtent",
-                                                              "size", "uvRepeat", "material"}));
+                                                              "size", "uvRepeat", "material", "castShadows", "receiveShadows"}));
     for (size_t i = 0; i < shapes.size(); ++i) parseShape(shapes[i], scene, i);
     const auto lights = root.objects("lights", {"type", "name", "position", "direction", "target", "color", "intensity",
-                                                "range", "innerConeAngle", "outerConeAngle"});
+                                                "range", "innerConeAngle", "outerConeAngle", "castShadows", "radius",
+                                                "angularDiameter"});
     for (size_t i = 0; i < lights.size(); ++i) parseLight(lights[i], scene, i);
     const auto billboards = root.objects("billboards", {"name", "kind", "sprite", "image", "size", "sizeInPixels", "anchor",
                                                         "tint", "alphaMode", "alphaCutoff", "axis", "sectorLight",

@@ -152,6 +152,17 @@ void applyModelMaterials(const Object& object, Scene& model)
     }
 }
 
+// castShadows / receiveShadows of a model or shape, on every node it added.
+void applyShadowFlags(const Object& object, Scene& scene, size_t firstNode)
+{
+    const bool cast = object.boolean("castShadows").value_or(true);
+    const bool receive = object.boolean("receiveShadows").value_or(true);
+    for (size_t i = firstNode; i < scene.nodes.size(); ++i) {
+        scene.nodes[i].castShadows = cast;
+        scene.nodes[i].receiveShadows = receive;
+    }
+}
+
 } // namespace
 
 void parseShape(const Object& object, Scene& scene, size_t index)
@@ -182,7 +193,9 @@ void parseShape(const Object& object, Scene& scene, size_t index)
     Material material = defaultShapeMaterial(name);
     if (const auto materialObject = object.object("material", kMaterialKeys))
         material = parseMaterial(*materialObject, name);
+    const size_t firstNode = scene.nodes.size();
     addShape(scene, std::move(primitive), material, parseTransform(object), name);
+    applyShadowFlags(object, scene, firstNode);
 }
 
 void parseModel(const Object& object, Scene& scene, const fs::path& directory)
@@ -201,7 +214,9 @@ void parseModel(const Object& object, Scene& scene, const fs::path& directory)
     }
     if (const auto name = object.string("name")) model.name = *name;
     applyModelMaterials(object, model);
+    const size_t firstNode = scene.nodes.size();
     scene.append(std::move(model), transform);
+    applyShadowFlags(object, scene, firstNode);
 }
 
 } // namespace specula::scene::scenefile_detail

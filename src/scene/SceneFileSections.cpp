@@ -64,6 +64,15 @@ void parseLight(const Object& object, Scene& scene, size_t index)
     light.color = object.color("color").value_or(light.color);
     light.intensity = object.nonNegative("intensity").value_or(light.intensity);
     light.range = object.nonNegative("range", true).value_or(0.0f);
+    object.onlyFor("radius", point || spot, "point and spot lights");
+    object.onlyFor("angularDiameter", !point && !spot, "directional lights");
+    light.castShadows = object.boolean("castShadows").value_or(true);
+    light.radius = object.nonNegative("radius").value_or(light.radius);
+    if (object.has("angularDiameter")) {
+        const float degrees = object.number("angularDiameter", 0.53f);
+        if (!(degrees >= 0.0f && degrees <= 45.0f)) object.fail("angularDiameter", "must be between 0 and 45 degrees");
+        light.angularDiameter = glm::radians(degrees);
+    }
     if (spot) {
         const float inner = object.number("innerConeAngle", 0.0f);
         const float outer = object.number("outerConeAngle", 45.0f);

@@ -22,6 +22,7 @@ enum class DebugView {
     BrdfD,     ///< D / D(n·h = 1) for the first light
     BrdfG,     ///< G for the first light
     BrdfF,     ///< F (rgb) for the first light
+    Cascades,  ///< the first shadowed directional light's cascade (red, green, blue, yellow) × its shadow
 };
 
 std::optional<DebugView> parseDebugView(std::string_view name);

@@ -66,7 +66,60 @@ constexpr SettingField<FxaaSettings> kFxaa[] = {
     {.name = "enabled", .member = &FxaaSettings::enabled, .help = "FXAA 3.11 on the tone-mapped image"},
 };
 
+constexpr SettingField<ShadowSettings> kShadows[] = {
+    {.name = "enabled", .member = &ShadowSettings::enabled, .help = "shadow maps for every light that casts"},
+    {.name = "cascades", .member = &ShadowSettings::cascades, .help = "cascades of a directional light",
+     .range = Range::between(1, 4)},
+    {.name = "cascadeSplit", .member = &ShadowSettings::cascadeSplit,
+     .help = "lambda of the practical split scheme (0 uniform, 1 logarithmic)", .range = Range::between(0, 1)},
+    {.name = "distance", .member = &ShadowSettings::distance,
+     .help = "metres the cascades reach (0: the far plane or the scene's far side)", .range = Range::nonNegative(),
+     .slider = Range::between(0, 500), .label = "distance (m)"},
+    {.name = "cascadeBlend", .member = &ShadowSettings::cascadeBlend, .help = "fraction of a cascade blended into the next",
+     .range = Range::between(0, 0.5)},
+    {.name = "normalBias", .member = &ShadowSettings::normalBias, .help = "normal-offset bias in texels",
+     .range = Range::nonNegative(), .slider = Range::between(0, 5)},
+    {.name = "slopeBias", .member = &ShadowSettings::slopeBias, .help = "slope-scaled depth bias of the shadow pass",
+     .range = Range::nonNegative(), .slider = Range::between(0, 8)},
+    {.name = "constantBias", .member = &ShadowSettings::constantBias, .help = "constant depth bias of the shadow pass",
+     .range = Range::nonNegative(), .slider = Range::between(0, 16)},
+    {.name = "maxLights", .member = &ShadowSettings::maxLights, .help = "spot and point lights given a map, by importance",
+     .range = Range::between(0, 1024), .slider = Range::between(0, 256)},
+    {.name = "maxDirectional", .member = &ShadowSettings::maxDirectional, .help = "directional lights given cascades",
+     .range = Range::between(0, 4)},
+    {.name = "lightSize", .member = &ShadowSettings::lightSize, .help = "scale of every light's size (PCSS penumbrae)",
+     .range = Range::nonNegative(), .slider = Range::between(0, 10)},
+    {.name = "cache", .member = &ShadowSettings::cache, .help = "keep maps whose lights and casters did not change"},
+};
+
 } // namespace
+
+const char* shadowQualityName(ShadowQuality quality)
+{
+    switch (quality) {
+    case ShadowQuality::Low: return "low";
+    case ShadowQuality::Medium: return "medium";
+    case ShadowQuality::High: return "high";
+    }
+    return "medium";
+}
+
+const char* shadowFilterName(ShadowFilter filter)
+{
+    switch (filter) {
+    case ShadowFilter::Hard: return "hard";
+    case ShadowFilter::Pcf: return "pcf";
+    case ShadowFilter::Pcss: return "pcss";
+    }
+    return "pcf";
+}
+
+template <>
+const SettingsTable<ShadowSettings>& settingsTable<ShadowSettings>()
+{
+    static const SettingsTable<ShadowSettings> table{"shadows", "shadows", kShadows};
+    return table;
+}
 
 template <>
 const SettingsTable<BloomSettings>& settingsTable<BloomSettings>()

@@ -65,7 +65,44 @@ struct FxaaSettings {
     bool enabled = false;
 };
 
-/// Each pass's table; defined for the four structs above.
+/// Shadow maps (render/passes/ShadowPass): on by default, unlike the post passes. Resolution
+/// and kernel come from `quality`, the filter from `filter` (their own flags, --shadow-quality
+/// and --shadow-filter: names, not numbers, so not table rows).
+enum class ShadowQuality { Low, Medium, High };
+enum class ShadowFilter { Hard, Pcf, Pcss };
+
+struct ShadowSettings {
+    bool enabled = true;
+    /// Cascades of each directional light's map (1–4), split by the practical scheme with λ
+    /// `cascadeSplit` (0 uniform, 1 logarithmic).
+    int cascades = 4;
+    float cascadeSplit = 0.8f;
+    /// Metres from the camera the cascades reach; 0 = the view's far plane, or the scene's
+    /// farthest point if that is nearer.
+    float distance = 0.0f;
+    /// Fraction of each cascade's depth range over which it blends into the next.
+    float cascadeBlend = 0.1f;
+    /// Normal-offset bias in texels of the map (scaled by sin θ of the light's incidence).
+    float normalBias = 1.5f;
+    /// Slope-scaled and constant depth bias of the shadow pass (glPolygonOffset).
+    float slopeBias = 3.0f;
+    float constantBias = 2.0f;
+    /// Spot and point lights given a map, by screen importance; more are left out and counted.
+    int maxLights = 64;
+    /// Directional lights given cascades.
+    int maxDirectional = 4;
+    /// Scales every light's size (its soft shadows' penumbra, PCSS).
+    float lightSize = 1.0f;
+    /// Keep a map while nothing in it changed; off: every map is drawn every frame (to measure).
+    bool cache = true;
+    ShadowQuality quality = ShadowQuality::Medium;
+    ShadowFilter filter = ShadowFilter::Pcf;
+};
+
+const char* shadowQualityName(ShadowQuality quality);
+const char* shadowFilterName(ShadowFilter filter);
+
+/// Each pass's table; defined for the structs above.
 template <typename T>
 const SettingsTable<T>& settingsTable();
 template <>
@@ -76,6 +113,8 @@ template <>
 const SettingsTable<AutoExposureSettings>& settingsTable<AutoExposureSettings>();
 template <>
 const SettingsTable<FxaaSettings>& settingsTable<FxaaSettings>();
+template <>
+const SettingsTable<ShadowSettings>& settingsTable<ShadowSettings>();
 
 /// What one source (the scene file's "post", the command line) sets of each pass.
 struct PostOverrides {
@@ -83,14 +122,16 @@ struct PostOverrides {
     SettingsOverride<SsaoSettings> ssao;
     SettingsOverride<FxaaSettings> fxaa;
     SettingsOverride<AutoExposureSettings> autoExposure;
+    SettingsOverride<ShadowSettings> shadows;
 };
 
-/// Calls f(s.bloom...), f(s.ssao...), f(s.fxaa...), f(s.autoExposure...): the same pass of each
-/// of `s` (structs with those four members: render::FrameSettings, PostOverrides), passes in the
-/// order the command line's help lists them.
+/// Calls f(s.shadows...), f(s.bloom...), f(s.ssao...), f(s.fxaa...), f(s.autoExposure...): the
+/// same pass of each of `s` (structs with those members: render::FrameSettings, PostOverrides),
+/// passes in the order the command line's help lists them.
 template <typename F, typename... S>
 void forEachPass(F&& f, S&... s)
 {
+    f(s.shadows...);
     f(s.bloom...);
     f(s.ssao...);
     f(s.fxaa...);

@@ -85,6 +85,21 @@ void resolvePostSettings(const scene::SceneDocument& document, const FrameOption
         s.ev100 = render::ev100FromCamera(camera->aperture, camera->shutter, camera->iso);
     }
     if (s.ev100 && !std::isfinite(*s.ev100)) throw Error("--ev100 must be a finite number (got {})", double(*s.ev100));
+
+    if (options.shadowQuality) {
+        const std::string& q = *options.shadowQuality;
+        if (q == "low") s.shadows.quality = ShadowQuality::Low;
+        else if (q == "medium") s.shadows.quality = ShadowQuality::Medium;
+        else if (q == "high") s.shadows.quality = ShadowQuality::High;
+        else throw Error("--shadow-quality must be low, medium or high (got '{}')", q);
+    }
+    if (options.shadowFilter) {
+        const std::string& f = *options.shadowFilter;
+        if (f == "hard") s.shadows.filter = ShadowFilter::Hard;
+        else if (f == "pcf") s.shadows.filter = ShadowFilter::Pcf;
+        else if (f == "pcss") s.shadows.filter = ShadowFilter::Pcss;
+        else throw Error("--shadow-filter must be hard, pcf or pcss (got '{}')", f);
+    }
 }
 
 } // namespace

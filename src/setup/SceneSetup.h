@@ -40,6 +40,8 @@ struct FrameOptions {
     /// resolveSettings checks each value against its table's range.
     PostOverrides post;
     std::optional<float> ev100; ///< physical camera exposure (--ev100)
+    std::optional<std::string> shadowQuality; ///< low | medium | high (--shadow-quality)
+    std::optional<std::string> shadowFilter;  ///< hard | pcf | pcss (--shadow-filter)
 };
 
 /// `name` is a .gltf/.glb/.json path, or a built-in scene (scene/BuiltinScenes.h); empty = demo.

@@ -13,6 +13,7 @@ constexpr uint64_t kIbl = 1u << 9;
 constexpr uint64_t kEnergyCompensation = 1u << 10;
 constexpr uint64_t kSsao = 1u << 11;
 constexpr uint64_t kDoomIndexed = 1u << 12;
+constexpr uint64_t kShadows = 1u << 13;
 constexpr int kDebugShift = 16, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
               kDiffuseShift = 30;
 constexpr uint64_t field(int shift, int bits) { return ((uint64_t(1) << bits) - 1) << shift; }
@@ -53,10 +54,12 @@ constexpr std::array kTable = {
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::BrdfD), "DEBUG_VIEW_BRDF_D", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::BrdfG), "DEBUG_VIEW_BRDF_G", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::BrdfF), "DEBUG_VIEW_BRDF_F", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::Cascades), "DEBUG_VIEW_CASCADES", K::DebugView},
     VariantDefine{kIbl, kIbl, "IBL", K::FrameFeature},
     VariantDefine{kEnergyCompensation, kEnergyCompensation, "ENERGY_COMPENSATION", K::FrameFeature},
     VariantDefine{kSsao, kSsao, "SSAO", K::FrameFeature},
     VariantDefine{kDoomIndexed, kDoomIndexed, "DOOM_INDEXED", K::FrameFeature},
+    VariantDefine{kShadows, kShadows, "SHADOWS", K::FrameFeature},
     VariantDefine{SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE, SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE, "HAS_BASE_COLOR_TEXTURE", K::MaterialFeature},
     VariantDefine{SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE, SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE,
                   "HAS_METALLIC_ROUGHNESS_TEXTURE", K::MaterialFeature},
@@ -68,7 +71,7 @@ constexpr std::array kTable = {
     VariantDefine{SPECULA_MATERIAL_ALPHA_BLEND, SPECULA_MATERIAL_ALPHA_BLEND, "ALPHA_BLEND", K::MaterialFeature},
     VariantDefine{SPECULA_MATERIAL_USE_VERTEX_COLOR, SPECULA_MATERIAL_USE_VERTEX_COLOR, "VERTEX_COLOR", K::MaterialFeature},
 };
-static_assert((kFeatureMask & (kIbl | kEnergyCompensation | kSsao | kDoomIndexed | kDebugMask)) == 0);
+static_assert((kFeatureMask & (kIbl | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kDebugMask)) == 0);
 
 } // namespace
 
@@ -83,7 +86,7 @@ bool isMaterialDebugView(DebugView view)
 }
 
 ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& shading, DebugView debugView, bool ibl,
-                                    bool energyCompensation, bool ssao, bool doomIndexed)
+                                    bool energyCompensation, bool ssao, bool doomIndexed, bool shadows)
 {
     uint64_t key = features & kFeatureMask;
     key |= at(kModelShift, shading.model);
@@ -96,6 +99,7 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
     if (energyCompensation) key |= kEnergyCompensation;
     if (ssao) key |= kSsao;
     if (doomIndexed) key |= kDoomIndexed;
+    if (shadows) key |= kShadows;
     return {key};
 }
 

@@ -30,9 +30,10 @@ struct ForwardVariant {
 
     /// `features`: SPECULA_MATERIAL_* bits (the shading bits above them are ignored: pass the
     /// resolved shading). A model other than the physically based one has no BRDF choices, so
-    /// its key holds none and variants that differ only there share one program.
+    /// its key holds none and variants that differ only there share one program. `shadows`:
+    /// some light of the frame has a shadow map (SHADOWS: lights/shadow.glsl samples them).
     static ForwardVariant make(uint32_t features, const ResolvedShading& shading, DebugView debugView, bool ibl,
-                               bool energyCompensation, bool ssao, bool doomIndexed);
+                               bool energyCompensation, bool ssao, bool doomIndexed, bool shadows = false);
 
     ResolvedShading shading() const;
     /// The material or BRDF debug view the key selects, if any.

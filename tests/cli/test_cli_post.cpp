@@ -160,7 +160,7 @@ TEST(CliPost, FlagsAreTheTablesRows)
         const auto r = runCli(std::string(command) + " --help");
         ASSERT_EQ(r.exitCode, 0) << r.err;
         std::set<std::string> listed;
-        const std::regex flag(R"(--(bloom|ssao|fxaa|auto-exposure)[a-z0-9-]*)");
+        const std::regex flag(R"(--(shadows|bloom|ssao|fxaa|auto-exposure)[a-z0-9-]*)");
         for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), flag); it != std::sregex_iterator(); ++it)
             listed.insert(it->str());
         EXPECT_EQ(listed, expected) << command << " --help:\n" << r.out;

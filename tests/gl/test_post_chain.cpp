@@ -32,6 +32,7 @@ render::FrameSettings everything(int width, int height, int msaa)
     s.width = width;
     s.height = height;
     s.msaa = msaa;
+    s.shadows.enabled = false; // the post chain alone (shadows: test_shadows.cpp)
     s.bloom.enabled = true;
     s.ssao.enabled = true;
     s.autoExposure.enabled = true;
@@ -93,6 +94,7 @@ TEST_F(GlTest, PassesOffCostNothing)
     render::FrameSettings plain;
     plain.width = 160;
     plain.height = 90;
+    plain.shadows.enabled = false;
     renderer.render(view, plain);
     EXPECT_EQ(passNames(renderer), (std::vector<std::string>{"forward", "resolve+tonemap"}));
     const ImageRGBA8 before = renderer.readImage();

@@ -89,7 +89,8 @@ TEST(PassSettings, RowsAreWellFormed)
         ASSERT_FALSE(table.fields.empty());
         EXPECT_STREQ(table.fields[0].name, "enabled") << table.key << ": the switch comes first";
         EXPECT_EQ(table.fields[0].kind(), SettingKind::Bool);
-        EXPECT_EQ(table.fields[0].defaultValue(), 0.0) << table.key << ": every pass is off by default";
+        // Shadows are on by default; every post pass is off.
+        EXPECT_EQ(table.fields[0].defaultValue(), std::string(table.key) == "shadows" ? 1.0 : 0.0) << table.key << ": default switch";
         std::set<std::string> names;
         for (const auto& field : table.fields) {
             SCOPED_TRACE(std::string(table.key) + "." + field.name);
@@ -136,7 +137,10 @@ TEST(PassSettings, FlagsAreTodays)
         for (const auto& field : table.fields)
             if (field.commandLine) flags.push_back(flagName(table, field));
     });
-    const std::vector<std::string> expected = {"bloom", "bloom-intensity", "bloom-levels", "bloom-radius", "bloom-threshold",
+    const std::vector<std::string> expected = {"shadows", "shadows-cascades", "shadows-cascade-split", "shadows-distance",
+                                               "shadows-cascade-blend", "shadows-normal-bias", "shadows-slope-bias",
+                                               "shadows-constant-bias", "shadows-max-lights", "shadows-max-directional",
+                                               "shadows-light-size", "shadows-cache", "bloom", "bloom-intensity", "bloom-levels", "bloom-radius", "bloom-threshold",
                                                "bloom-knee", "bloom-firefly-filter", "ssao", "ssao-radius", "ssao-bias",
                                                "ssao-power", "ssao-samples", "fxaa", "auto-exposure"};
     EXPECT_EQ(flags, expected);
@@ -224,7 +228,7 @@ TEST(PassSettings, OutOfRangeOnTheCommandLine)
             ++checked;
         }
     });
-    EXPECT_EQ(checked, 9); // every numeric flag has a bound
+    EXPECT_EQ(checked, 19); // every numeric flag has a bound
 }
 
 TEST(PassSettings, SourcesLayerOverDefaults)

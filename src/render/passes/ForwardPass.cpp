@@ -11,6 +11,7 @@
 #include "render/graph/GlGraphBackend.h"
 #include "render/passes/BillboardPass.h"
 #include "render/passes/DoomPass.h"
+#include "render/passes/ShadowPass.h"
 #include "shaders/shared/Bindings.h"
 
 namespace specula::render {
@@ -21,6 +22,7 @@ struct ForwardProgram {
     gl::Program program;
     int model = -1;
     int normalMatrix = -1;
+    int receiveShadows = -1;
     ResolvedShading shading;
     bool readsDfg = false; ///< samples the DFG table of `shading` (image-based light or energy compensation)
 };
@@ -77,13 +79,15 @@ struct ForwardPass::Impl {
     std::map<uint64_t, ForwardProgram> programs; // node-based: pointers stay valid
     std::vector<DrawProgram> materialPrograms;   // this frame's, by material
     SkyboxPass skybox;
+    bool shadows = false;                        // this frame's SHADOWS variants
 
     ForwardProgram& program(const FrameContext& frame, uint32_t features)
     {
         const FrameSettings& s = frame.settings;
         const ResolvedShading shading = resolveShading(s.materialOverride, s.brdfGeometry, features);
         const ForwardVariant variant =
-            ForwardVariant::make(features, shading, s.debugView, iblOn(frame), s.energyCompensation, s.ssao.enabled, isDoomFrame(s));
+            ForwardVariant::make(features, shading, s.debugView, iblOn(frame), s.energyCompensation, s.ssao.enabled, isDoomFrame(s),
+                                 shadows);
         auto it = programs.find(variant.key);
         if (it != programs.end()) return it->second;
         ForwardProgram p;
@@ -91,6 +95,7 @@ struct ForwardPass::Impl {
                                  .label = "forward " + variant.name()});
         p.model = p.program.uniformLocation("uModel");
         p.normalMatrix = p.program.uniformLocation("uNormalMatrix");
+        p.receiveShadows = p.program.uniformLocation("uReceiveShadows");
         p.shading = shading;
         // Debug views and the classic models return before the split sum (pbr.frag).
         p.readsDfg = shading.model == scene::ShadingModel::Pbr && !variant.debugView() && (iblOn(frame) || s.energyCompensation);
@@ -111,9 +116,10 @@ bool ForwardPass::anyDoomMaterial(const FrameContext& frame)
     });
 }
 
-const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext& frame)
+const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext& frame, bool shadows)
 {
     Impl& r = *mImpl;
+    r.shadows = shadows;
     r.materialPrograms.clear();
     r.skybox.prepare();
     const GpuScene* scene = frame.stores.scene.get();
@@ -121,7 +127,7 @@ const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext
     for (const MaterialBinding& m : scene->materials()) {
         ForwardProgram& p = r.program(frame, m.features);
         const gl::Texture* dfg = p.readsDfg ? &frame.stores.ibl.dfg(frame.state(), p.shading) : nullptr;
-        r.materialPrograms.push_back({&p.program, p.model, p.normalMatrix, dfg});
+        r.materialPrograms.push_back({&p.program, p.model, p.normalMatrix, dfg, p.receiveShadows});
     }
     return r.materialPrograms;
 }
@@ -138,7 +144,7 @@ FrameDrawLists ForwardPass::drawLists(const FrameContext& frame) const
 }
 
 void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const FrameDrawLists& lists, const Targets& targets,
-                        BillboardPass& billboards, DoomPass* doom)
+                        BillboardPass& billboards, DoomPass* doom, const ShadowPass* shadows)
 {
     Impl& r = *mImpl;
     const bool indexed = isDoomFrame(frame.settings);
@@ -147,10 +153,11 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
         "forward",
         [&](FrameGraph::Builder& b) {
             if (targets.occlusion) b.read(targets.occlusion, Use::Sample);
+            if (targets.shadows) b.read(targets.shadows, Use::Sample);
             b.write(targets.color, Use::ColorAttachment);
             b.write(targets.depth, Use::DepthAttachment);
         },
-        [&frame, &lists, &r, &billboards, doom, targets, indexed] {
+        [&frame, &lists, &r, &billboards, doom, shadows, targets, indexed] {
             gl::State& state = frame.state();
             FrameStores& stores = frame.stores;
             const FrameSettings& settings = frame.settings;
@@ -180,6 +187,7 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
                 stores.environment.bind(SPECULA_BINDING_ENVIRONMENT);
             }
             stores.lights.bind(state);
+            if (targets.shadows && shadows) shadows->bind(state);
             // Doom materials look their colours up in the tables, inline or for the colour-map pass.
             if (doom) doom->bindTables(state);
             if (!stores.scene) return;

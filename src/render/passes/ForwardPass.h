@@ -23,6 +23,7 @@ namespace specula::render {
 
 class BillboardPass;
 class DoomPass;
+class ShadowPass;
 struct FrameContext;
 
 /// The frame's draw lists of its one view, built once and read by every pass that draws it.
@@ -39,8 +40,8 @@ public:
     ForwardPass& operator=(const ForwardPass&) = delete;
 
     /// Each material's program for this frame (compiled on first use), and the DFG table it
-    /// reads, baked on first use.
-    const std::vector<DrawProgram>& prepareMaterials(const FrameContext& frame);
+    /// reads, baked on first use. `shadows`: some light has a shadow map (SHADOWS variants).
+    const std::vector<DrawProgram>& prepareMaterials(const FrameContext& frame, bool shadows = false);
     /// The draw lists of the frame's view, sorted with prepareMaterials' programs.
     FrameDrawLists drawLists(const FrameContext& frame) const;
 
@@ -48,12 +49,14 @@ public:
         GraphTexture color; ///< RGBA16F radiance, or a Doom frame's RG8UI indices
         GraphTexture depth;
         GraphTexture occlusion; ///< SSAO's, when the frame has it
+        GraphTexture shadows;   ///< the shadow atlas, when some light has a map
     };
     /// Adds "forward": clears the targets (to the background radiance, or in a Doom frame its
     /// nearest palette index) and draws into them. `doom` is needed when a material (or the
-    /// frame) uses the Doom model: its tables are bound.
+    /// frame) uses the Doom model: its tables are bound. `shadows` binds the shadow maps when
+    /// targets.shadows is set.
     void addTo(FrameGraph& graph, const FrameContext& frame, const FrameDrawLists& lists, const Targets& targets,
-               BillboardPass& billboards, DoomPass* doom);
+               BillboardPass& billboards, DoomPass* doom, const ShadowPass* shadows = nullptr);
 
     /// Whether any material is shaded with the Doom model under these settings.
     static bool anyDoomMaterial(const FrameContext& frame);

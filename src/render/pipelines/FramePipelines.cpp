@@ -54,7 +54,8 @@ void buildForward(Frame& f, FramePasses& passes, const FrameContext& frame)
     const GraphTexture depth = graph.createTexture(multisampled ? "msaa depth" : "depth",
                                                    target(frame, gl::Format::Depth32F, frame.samples));
     DoomPass* doomTables = ForwardPass::anyDoomMaterial(frame) ? &passes.doom() : nullptr;
-    passes.forward.addTo(graph, frame, f.lists, {color, depth, out.occlusion}, passes.billboards, doomTables);
+    passes.forward.addTo(graph, frame, f.lists, {color, depth, out.occlusion, out.shadows}, passes.billboards, doomTables,
+                         &passes.shadows);
     if (multisampled) {
         out.msaaColor = color;
     } else {
@@ -104,7 +105,9 @@ void buildDoom(Frame& f, FramePasses& passes, const FrameContext& frame)
 
 void buildFrame(Frame& f, FramePasses& passes, const FrameContext& frame)
 {
-    passes.forward.prepareMaterials(frame);
+    // Shadows first: whether any light has a map picks the forward programs.
+    f.outputs.shadows = passes.shadows.addTo(f.graph, frame);
+    passes.forward.prepareMaterials(frame, passes.shadows.active());
     f.lists = passes.forward.drawLists(frame);
     if (isDoomFrame(frame.settings)) {
         buildDoom(f, passes, frame);

@@ -1,0 +1,424 @@
+// Shadows against an exact ray test: scenes of analytic primitives (a floor, spheres, boxes)
+// rendered by the GPU with shadow maps, and on the CPU by casting each pixel's ray, finding
+// the nearest hit and testing the segment from it to the light against every primitive — lit
+// or not — times the same BRDF the GPU-vs-CPU shading tests use (shading/Brdf.h).
+//
+// Pixels within a band of any change of what the CPU sees (another primitive, lit against
+// shadowed) are not compared: the shadow filter's width, a tessellated sphere's silhouette and
+// the shadow map's texels all live there. Elsewhere, inside the umbra, the GPU's radiance must
+// be at most 2% of the unshadowed value; in the light, within the shading tests' tolerance.
+// Each case also runs with shadows off and must then fail (the test can tell).
+#include "GlTestContext.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <filesystem>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/ImageIO.h"
+#include "render/Renderer.h"
+#include "scene/DemoScenes.h"
+#include "scene/Procedural.h"
+#include "shading/Brdf.h"
+#include "settings/PassSettings.h"
+
+using namespace specula;
+using specula::test::GlTest;
+using glm::dvec3;
+
+namespace {
+
+struct Sphere {
+    glm::vec3 center;
+    float radius;
+};
+struct Box {
+    glm::vec3 min, max;
+};
+
+struct ShadowScene {
+    float floorSize = 20.0f;
+    std::vector<Sphere> spheres;
+    std::vector<Box> boxes;
+    scene::Light light;
+    glm::vec3 lightPosition{0.0f};
+    glm::vec3 lightDirection{0.0f, -1.0f, 0.0f};
+    glm::vec3 eye{0.0f, 8.0f, 10.0f};
+    glm::vec3 target{0.0f};
+    float yfov = glm::radians(50.0f);
+    float far = 100.0f;
+    int width = 160, height = 120;
+};
+
+const glm::vec3 kBaseColor(0.8f);
+constexpr float kRoughness = 0.8f;
+
+// The nearest hit of a ray: t, the primitive (0 floor, then spheres, then boxes), the normal.
+struct Hit {
+    double t = std::numeric_limits<double>::infinity();
+    int object = -1;
+    dvec3 normal{0.0};
+};
+
+void hitSphere(const Sphere& s, const dvec3& o, const dvec3& d, int id, Hit& hit)
+{
+    const dvec3 oc = o - dvec3(s.center);
+    const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - double(s.radius) * s.radius;
+    const double disc = b * b - c;
+    if (disc <= 0.0) return;
+    const double t = -b - std::sqrt(disc);
+    if (t > 1e-6 && t < hit.t) hit = {t, id, glm::normalize(o + d * t - dvec3(s.center))};
+}
+
+void hitBox(const Box& box, const dvec3& o, const dvec3& d, int id, Hit& hit)
+{
+    double t0 = -1e300, t1 = 1e300;
+    int axis = -1;
+    double sign = 1.0;
+    for (int a = 0; a < 3; ++a) {
+        if (std::abs(d[a]) < 1e-12) {
+            if (o[a] < box.min[a] || o[a] > box.max[a]) return;
+            continue;
+        }
+        double ta = (box.min[a] - o[a]) / d[a], tb = (box.max[a] - o[a]) / d[a];
+        double s = -1.0;
+        if (ta > tb) {
+            std::swap(ta, tb);
+            s = 1.0;
+        }
+        if (ta > t0) {
+            t0 = ta;
+            axis = a;
+            sign = s;
+        }
+        t1 = std::min(t1, tb);
+    }
+    if (t0 > t1 || t0 <= 1e-6 || t0 >= hit.t || axis < 0) return;
+    dvec3 n(0.0);
+    n[axis] = sign;
+    hit = {t0, id, n};
+}
+
+Hit intersect(const ShadowScene& sc, const dvec3& o, const dvec3& d)
+{
+    Hit hit;
+    if (std::abs(d.y) > 1e-12) {
+        const double t = -o.y / d.y;
+        const dvec3 p = o + d * t;
+        const double h = 0.5 * sc.floorSize;
+        if (t > 1e-6 && std::abs(p.x) <= h && std::abs(p.z) <= h) hit = {t, 0, dvec3(0, 1, 0)};
+    }
+    for (size_t i = 0; i < sc.spheres.size(); ++i) hitSphere(sc.spheres[i], o, d, int(1 + i), hit);
+    for (size_t i = 0; i < sc.boxes.size(); ++i) hitBox(sc.boxes[i], o, d, int(1 + sc.spheres.size() + i), hit);
+    return hit;
+}
+
+scene::Scene buildScene(const ShadowScene& sc)
+{
+    scene::Scene s;
+    scene::Material material;
+    material.baseColorFactor = glm::vec4(kBaseColor, 1.0f);
+    material.metallicFactor = 0.0f;
+    material.roughnessFactor = kRoughness;
+    scene::addShape(s, scene::makePlane(sc.floorSize), material, glm::mat4(1.0f), "floor");
+    for (const Sphere& sp : sc.spheres)
+        scene::addShape(s, scene::makeUvSphere(sp.radius, 128, 64), material, glm::translate(glm::mat4(1.0f), sp.center), "sphere");
+    for (const Box& b : sc.boxes) {
+        const glm::mat4 t = glm::scale(glm::translate(glm::mat4(1.0f), 0.5f * (b.min + b.max)), 0.5f * (b.max - b.min));
+        scene::addShape(s, scene::makeCube(1.0f), material, t, "box");
+    }
+    scene::addLight(s, sc.light, sc.lightPosition, sc.lightDirection);
+    return s;
+}
+
+struct Comparison {
+    int umbra = 0, umbraWrong = 0; ///< interior shadowed pixels, and those brighter than 2% of lit
+    std::vector<int> umbraByCaster; ///< interior shadowed pixels by the primitive that casts them
+    int lit = 0, litWrong = 0;     ///< interior lit pixels, and those off by more than the tolerance
+    std::string firstUmbraFailure, firstLitFailure;
+};
+
+// Renders `sc` and compares every interior pixel with the CPU's exact answer.
+Comparison compare(const ShadowScene& sc, const render::FrameSettings& base, int band, const std::string& name)
+{
+    render::FrameSettings settings = base;
+    settings.width = sc.width;
+    settings.height = sc.height;
+    settings.msaa = 1;
+    settings.tonemap = render::Tonemap::None;
+    settings.energyCompensation = false;
+    const render::View view = render::lookAtView(sc.eye, sc.target, {0, 1, 0}, sc.yfov, float(sc.width) / float(sc.height), 0.1f, sc.far);
+    render::Renderer renderer;
+    renderer.setScene(buildScene(sc));
+    renderer.render(view, settings);
+    const ImageFloat image = renderer.readRadiance();
+    // For review by eye: the GPU's image and what the CPU tests where (green lit, red umbra).
+    const std::filesystem::path out = std::filesystem::path(SPECULA_TEST_OUTPUT_DIR) / "shadows";
+    std::filesystem::create_directories(out);
+    writePng(out / (name + "-gpu.png"), renderer.readImage());
+    ImageRGBA8 tested;
+    tested.width = sc.width;
+    tested.height = sc.height;
+    tested.pixels.assign(size_t(sc.width * sc.height) * 4, 0);
+
+    const glm::dmat4 inverseViewProjection = glm::inverse(glm::dmat4(view.projection * view.view));
+    render::brdf::Surface surface;
+    surface.baseColor = dvec3(kBaseColor);
+    surface.metallic = 0.0;
+    surface.perceptualRoughness = kRoughness;
+    const int w = sc.width, h = sc.height;
+    std::vector<int> category(size_t(w * h), -1); // object * 2 + lit, -1 background
+    std::vector<dvec3> unshadowed(size_t(w * h), dvec3(0.0));
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const double ndcX = (x + 0.5) / w * 2.0 - 1.0, ndcY = 1.0 - (y + 0.5) / h * 2.0;
+            const glm::dvec4 n0 = inverseViewProjection * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
+            const glm::dvec4 n1 = inverseViewProjection * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
+            const dvec3 o = dvec3(n0) / n0.w, d = glm::normalize(dvec3(n1) / n1.w - o);
+            const Hit hit = intersect(sc, o, d);
+            if (hit.object < 0) continue;
+            const dvec3 p = o + d * hit.t;
+            dvec3 l;
+            double illuminance = sc.light.intensity, maxT = 1e300;
+            if (sc.light.type == scene::Light::Type::Directional) {
+                l = -glm::normalize(dvec3(sc.lightDirection));
+            } else {
+                const dvec3 toLight = dvec3(sc.lightPosition) - p;
+                maxT = glm::length(toLight);
+                l = toLight / maxT;
+                illuminance *= render::brdf::rangeAttenuation(sc.light.range, maxT);
+                if (sc.light.type == scene::Light::Type::Spot)
+                    illuminance *= render::brdf::spotAttenuation(glm::normalize(dvec3(sc.lightDirection)), l, sc.light.innerConeAngle,
+                                                                 sc.light.outerConeAngle);
+            }
+            const double NoL = glm::dot(hit.normal, l);
+            const dvec3 v = -d;
+            const dvec3 value = NoL > 0.0 ? render::brdf::evaluate(surface, hit.normal, v, l) * illuminance * NoL : dvec3(0.0);
+            const Hit blocker = intersect(sc, p + hit.normal * 1e-5, l);
+            const bool lit = NoL > 0.0 && blocker.t >= maxT;
+            // Shadowed pixels also by their caster (self-shadowed ones: the primitive itself).
+            const int caster = lit ? 0 : blocker.t < maxT ? blocker.object : hit.object;
+            category[size_t(y * w + x)] = (hit.object * 256 + caster) * 2 + (lit ? 1 : 0);
+            unshadowed[size_t(y * w + x)] = value;
+        }
+    }
+    Comparison result;
+    result.umbraByCaster.assign(1 + sc.spheres.size() + sc.boxes.size(), 0);
+    for (int y = band; y < h - band; ++y) {
+        for (int x = band; x < w - band; ++x) {
+            const int c = category[size_t(y * w + x)];
+            if (c < 0) continue;
+            bool interior = true;
+            for (int dy = -band; dy <= band && interior; ++dy)
+                for (int dx = -band; dx <= band && interior; ++dx) interior = category[size_t((y + dy) * w + x + dx)] == c;
+            if (!interior) continue;
+            const dvec3 expected = unshadowed[size_t(y * w + x)];
+            if (expected.r < 1e-3) continue; // facing away: nothing to tell lit from shadowed
+            const float* px = &image.pixels[(size_t(y) * size_t(w) + size_t(x)) * 4];
+            const double got = px[0];
+            uint8_t* mark = &tested.pixels[(size_t(y) * size_t(w) + size_t(x)) * 4];
+            mark[c % 2 == 0 ? 0 : 1] = 255;
+            mark[3] = 255;
+            if (c % 2 == 0) {
+                ++result.umbra;
+                ++result.umbraByCaster[size_t((c / 2) % 256)];
+                if (got > 0.02 * expected.r) {
+                    if (result.umbraWrong++ == 0)
+                        result.firstUmbraFailure = "umbra pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): GPU " +
+                                              std::to_string(got) + ", lit would be " + std::to_string(expected.r);
+                }
+            } else {
+                ++result.lit;
+                if (std::abs(got - expected.r) > 0.015 * expected.r + 2e-3) {
+                    if (result.litWrong++ == 0)
+                        result.firstLitFailure = "lit pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): GPU " +
+                                              std::to_string(got) + ", CPU " + std::to_string(expected.r);
+                }
+            }
+        }
+    }
+    writePng(out / (name + "-tested.png"), tested);
+    return result;
+}
+
+// The standard casters: a sphere above the floor, a box on it, a thin tall box.
+ShadowScene casters()
+{
+    ShadowScene sc;
+    sc.spheres = {{{-2.0f, 1.6f, 0.0f}, 1.0f}};
+    sc.boxes = {{{1.0f, 0.0f, -1.0f}, {2.6f, 1.2f, 0.6f}}, {{-0.3f, 0.0f, 2.0f}, {0.0f, 3.0f, 2.3f}}};
+    return sc;
+}
+
+void expectShadowsMatch(const char* name, const ShadowScene& sc, int band = 3, int minUmbra = 100)
+{
+    SCOPED_TRACE(name);
+    render::FrameSettings settings;
+    settings.shadows.filter = ShadowFilter::Hard; // the exact test has hard edges
+    const Comparison on = compare(sc, settings, band, name);
+    EXPECT_GE(on.umbra, minUmbra) << "too few umbra pixels to tell";
+    EXPECT_GE(on.lit, 100) << "too few lit pixels to tell";
+    EXPECT_EQ(on.umbraWrong, 0) << on.firstUmbraFailure << " (" << on.umbraWrong << " of " << on.umbra << " umbra pixels)";
+    EXPECT_EQ(on.litWrong, 0) << on.firstLitFailure << " (" << on.litWrong << " of " << on.lit << " lit pixels)";
+    // The same comparison without shadows must fail: every umbra pixel is then fully lit.
+    settings.shadows.enabled = false;
+    const Comparison off = compare(sc, settings, band, std::string(name) + "-off");
+    EXPECT_GT(off.umbraWrong, off.umbra / 2) << "with shadows off the comparison should fail";
+}
+
+} // namespace
+
+TEST_F(GlTest, PointLightShadowsMatchRayTest)
+{
+    ShadowScene sc = casters();
+    sc.light.type = scene::Light::Type::Point;
+    sc.light.intensity = 300.0f;
+    sc.lightPosition = {0.5f, 5.0f, -3.0f};
+    expectShadowsMatch("point", sc);
+}
+
+TEST_F(GlTest, SpotLightShadowsMatchRayTest)
+{
+    ShadowScene sc = casters();
+    sc.light.type = scene::Light::Type::Spot;
+    sc.light.intensity = 400.0f;
+    sc.light.innerConeAngle = glm::radians(40.0f);
+    sc.light.outerConeAngle = glm::radians(55.0f);
+    sc.lightPosition = {-1.0f, 6.0f, -4.0f};
+    sc.lightDirection = glm::normalize(glm::vec3(0.0f, 0.0f, 1.0f) - sc.lightPosition);
+    expectShadowsMatch("spot", sc);
+}
+
+TEST_F(GlTest, SunShadowsMatchRayTestAt35And10Degrees)
+{
+    for (const float elevation : {35.0f, 10.0f}) {
+        ShadowScene sc = casters();
+        sc.floorSize = 60.0f;
+        sc.light.type = scene::Light::Type::Directional;
+        sc.light.intensity = 3.0f;
+        const float e = glm::radians(elevation), azimuth = glm::radians(30.0f);
+        // The sun behind the casters: their shadows fall towards the camera.
+        sc.lightDirection = -glm::vec3(std::cos(e) * std::sin(azimuth), std::sin(e), -std::cos(e) * std::cos(azimuth));
+        sc.eye = {0.0f, 10.0f, 14.0f};
+        sc.width = 240;
+        sc.height = 180;
+        // At 10° a texel of the map stretches 1/sin 10° = 5.8 times along the floor: a wider band.
+        if (elevation > 20.0f) expectShadowsMatch("sun at 35 degrees", sc);
+        else expectShadowsMatch("sun at 10 degrees", sc, 8, 40);
+    }
+}
+
+// A sun over a 200 m floor, casters 3, 8, 20, 45 and 90 m from the camera: each casts onto a
+// wall behind it that faces the camera (so that far shadows are not foreshortened to nothing),
+// every cascade is used, and every caster's shadow must be there (counted per caster).
+TEST_F(GlTest, CascadesCoverCastersFrom3To90Metres)
+{
+    ShadowScene sc;
+    sc.floorSize = 200.0f;
+    sc.far = 150.0f;
+    sc.width = 480;
+    sc.height = 270;
+    sc.yfov = glm::radians(45.0f);
+    sc.eye = {0.0f, 1.5f, 0.0f};
+    sc.target = {0.0f, 1.5f, -100.0f};
+    sc.light.type = scene::Light::Type::Directional;
+    sc.light.intensity = 3.0f;
+    const glm::vec3 toSun = glm::normalize(glm::vec3(0.3f, 0.5f, 0.8f));
+    sc.lightDirection = -toSun;
+    const float distances[] = {3.0f, 8.0f, 20.0f, 45.0f, 90.0f};
+    const float azimuths[] = {-24.0f, -12.0f, 0.0f, 12.0f, 24.0f};
+    for (int i = 0; i < 5; ++i) {
+        const float d = distances[i];
+        const float x = d * std::tan(glm::radians(azimuths[i]));
+        // The wall: 0.25 d wide, 0.3 d tall, its front face at z = -d.
+        sc.boxes.push_back({{x - 0.125f * d, 0.0f, -d - 0.02f * d}, {x + 0.125f * d, 0.3f * d, -d}});
+        // The caster: a cube of 0.06 d, 0.15 d in front of the wall.
+        const glm::vec3 c(x + 0.03f * d, 0.2f * d, -d + 0.15f * d);
+        sc.boxes.push_back({c - glm::vec3(0.03f * d), c + glm::vec3(0.03f * d)});
+    }
+    SCOPED_TRACE("cascades");
+    render::FrameSettings settings;
+    settings.shadows.filter = ShadowFilter::Hard;
+    const Comparison on = compare(sc, settings, 2, "cascades");
+    EXPECT_EQ(on.umbraWrong, 0) << on.firstUmbraFailure << " (" << on.umbraWrong << " of " << on.umbra << " umbra pixels)";
+    EXPECT_EQ(on.litWrong, 0) << on.firstLitFailure << " (" << on.litWrong << " of " << on.lit << " lit pixels)";
+    for (int i = 0; i < 5; ++i) {
+        const int caster = 1 + 2 * i + 1; // after the floor, each wall then its caster
+        EXPECT_GE(on.umbraByCaster[size_t(caster)], 20) << "the shadow of the caster at " << distances[i] << " m";
+    }
+    settings.shadows.enabled = false;
+    const Comparison off = compare(sc, settings, 2, "cascades-off");
+    EXPECT_GT(off.umbraWrong, off.umbra / 2) << "with shadows off the comparison should fail";
+}
+
+// No acne: a floor lit by a sun 10° above it, nothing above it, is uniformly lit (every pixel
+// within the shading tolerance of the unshadowed value); the floor is its own caster.
+TEST_F(GlTest, NoAcneOnAFloorLitAtTenDegrees)
+{
+    ShadowScene sc;
+    sc.floorSize = 60.0f;
+    sc.light.type = scene::Light::Type::Directional;
+    sc.light.intensity = 3.0f;
+    const float e = glm::radians(10.0f);
+    sc.lightDirection = -glm::vec3(std::cos(e) * 0.6f, std::sin(e), std::cos(e) * 0.8f);
+    sc.eye = {0.0f, 4.0f, 12.0f};
+    for (const ShadowFilter filter : {ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Pcss}) {
+        SCOPED_TRACE(shadowFilterName(filter));
+        render::FrameSettings settings;
+        settings.shadows.filter = filter;
+        const Comparison c = compare(sc, settings, 1, std::string("acne-") + shadowFilterName(filter));
+        EXPECT_GT(c.lit, 5000);
+        EXPECT_EQ(c.umbra, 0);
+        EXPECT_EQ(c.litWrong, 0) << c.firstLitFailure << " (" << c.litWrong << " of " << c.lit << " lit pixels)";
+    }
+}
+
+// Cached shadows: a still scene draws its maps once; moving the camera redraws the cascades
+// (they follow the view) and nothing else; editing a light redraws only its views.
+TEST_F(GlTest, StillScenesDrawTheirShadowMapsOnce)
+{
+    ShadowScene sc = casters();
+    sc.light.type = scene::Light::Type::Spot;
+    sc.light.intensity = 100.0f;
+    sc.lightPosition = {-3.0f, 7.0f, 3.0f};
+    sc.lightDirection = -sc.lightPosition;
+    scene::Scene s = buildScene(sc);
+    scene::Light point;
+    point.intensity = 50.0f;
+    scene::addLight(s, point, {2.0f, 4.0f, 0.0f}, {0, -1, 0});
+    scene::Light sun;
+    sun.type = scene::Light::Type::Directional;
+    scene::addLight(s, sun, {0, 0, 0}, {0.3f, -1.0f, 0.2f});
+    render::Renderer renderer;
+    renderer.setScene(s);
+    render::FrameSettings settings;
+    settings.width = settings.height = 64;
+    settings.msaa = 1;
+    const render::View view = render::lookAtView(sc.eye, sc.target, {0, 1, 0}, sc.yfov, 1.0f, 0.1f, 100.0f);
+    renderer.render(view, settings);
+    const auto& stats = renderer.stats().shadows;
+    EXPECT_EQ(stats.lights, 3);
+    EXPECT_EQ(stats.views, 1 + 6 + 4) << "a spot's view, six cube faces, four cascades";
+    EXPECT_EQ(stats.rendered, stats.views);
+    for (int frame = 0; frame < 3; ++frame) {
+        renderer.render(view, settings);
+        EXPECT_EQ(renderer.stats().shadows.rendered, 0) << "frame " << frame + 2 << " of a still scene";
+        EXPECT_EQ(renderer.stats().shadows.cached, 11);
+    }
+    const render::View moved = render::lookAtView(sc.eye + glm::vec3(0.5f, 0, 0), sc.target, {0, 1, 0}, sc.yfov, 1.0f, 0.1f, 100.0f);
+    renderer.render(moved, settings);
+    EXPECT_EQ(renderer.stats().shadows.rendered, 4) << "only the cascades follow the camera";
+    render::PlacedLight spot = renderer.light(0);
+    spot.position += glm::vec3(0.1f, 0, 0);
+    renderer.setLight(0, spot);
+    renderer.render(moved, settings);
+    EXPECT_EQ(renderer.stats().shadows.rendered, 1) << "only the edited spot light's view";
+    settings.shadows.cache = false;
+    renderer.render(moved, settings);
+    EXPECT_EQ(renderer.stats().shadows.rendered, 11) << "with the cache off every view, every frame";
+}
