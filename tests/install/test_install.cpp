@@ -153,6 +153,9 @@ TEST(Install, ExampleBuildsWithFindPackageAndRenders)
     if (std::string(SPECULA_CXX_LAUNCHER).size()) configure += " -DCMAKE_CXX_COMPILER_LAUNCHER=" SPECULA_CXX_LAUNCHER;
     const Result configured = run(configure);
     ASSERT_EQ(configured.code, 0) << configured.output;
+    EXPECT_NE(configured.output.find("its shaders: " + fs::weakly_canonical(kPrefix / "share/specula/shaders").string()),
+              std::string::npos)
+        << configured.output;
     const Result built = run(std::string(SPECULA_CMAKE_COMMAND) + " --build " + quoted(build));
     ASSERT_EQ(built.code, 0) << built.output;
 
