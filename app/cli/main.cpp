@@ -9,6 +9,7 @@
 #include "app/viewer/ViewCommand.h"
 #include "core/Error.h"
 #include "core/Log.h"
+#include "specula/Version.h"
 
 using namespace specula;
 
@@ -49,6 +50,7 @@ int main(int argc, char** argv)
 {
     log::init();
     CLI::App app{"Specula: a physically based renderer (OpenGL 4.5)", "specula"};
+    app.set_version_flag("--version", std::string("specula ") + versionString());
     app.require_subcommand(1);
     // One line per failure: the first line of CLI11's message plus a pointer to --help.
     app.failure_message([](const CLI::App*, const CLI::Error& e) {

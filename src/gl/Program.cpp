@@ -1,6 +1,8 @@
 #include "gl/Program.h"
 
+#include <dlfcn.h>
 #include <epoxy/gl.h>
+#include <link.h>
 
 #include <cstdlib>
 
@@ -51,10 +53,45 @@ void detail::deleteProgram(uint32_t id)
     glDeleteProgram(id);
 }
 
+namespace {
+
+/// The directory of the file that holds this code: the shared library, or the executable a
+/// static library is linked into.
+std::filesystem::path moduleDirectory()
+{
+    Dl_info info{};
+    link_map* map = nullptr;
+    if (dladdr1(reinterpret_cast<void*>(&moduleDirectory), &info, reinterpret_cast<void**>(&map), RTLD_DL_LINKMAP) &&
+        map && map->l_name && map->l_name[0] != '\0')
+        return std::filesystem::path(map->l_name).parent_path();
+    // The main program's link map has no name.
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    return ec ? std::filesystem::path() : exe.parent_path();
+}
+
+/// share/specula/shaders beside the module or one level up: bin/../share in an installed
+/// tree, build/share in the build tree (a link to the sources, for editing and hot reload).
+/// Relative only, so an installed tree can move.
+std::filesystem::path installedShaderDirectory()
+{
+    const std::filesystem::path module = moduleDirectory();
+    if (module.empty()) return {};
+    for (const char* candidate : {"../share/specula/shaders", "share/specula/shaders"}) {
+        std::error_code ec;
+        const std::filesystem::path dir = std::filesystem::weakly_canonical(module / candidate, ec);
+        if (!ec && std::filesystem::is_directory(dir, ec)) return dir;
+    }
+    return {};
+}
+
+} // namespace
+
 std::filesystem::path shaderRoot()
 {
     if (const char* dir = std::getenv("SPECULA_SHADER_DIR"); dir && *dir) return dir;
-    return SPECULA_SHADER_DIR;
+    static const std::filesystem::path installed = installedShaderDirectory();
+    return installed; // empty: the embedded copy
 }
 
 Program::Program(const ProgramDesc& desc) : mDesc(desc)

@@ -23,7 +23,11 @@ public:
     using Error::Error;
 };
 
-/// The directory holding the GLSL sources: $SPECULA_SHADER_DIR, else the source tree's shaders/.
+/// Where the GLSL sources are read from: $SPECULA_SHADER_DIR; else share/specula/shaders
+/// beside or one level above the file holding the library (bin/../share when installed; the
+/// build tree's share/, a link to shaders/); else empty, meaning the copy embedded in the
+/// library at build time (loadShaderSource reads it), which always matches the C++ it was
+/// built with.
 std::filesystem::path shaderRoot();
 
 struct ProgramDesc {

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "gl/EmbeddedShaders.h"
 
 namespace specula::gl {
 namespace fs = std::filesystem;
@@ -21,7 +22,7 @@ std::string lineDirective(int line, int file)
 }
 
 struct Loader {
-    fs::path root;
+    fs::path root; // empty: the copy embedded in the library
     std::vector<std::string> files;  // relative paths, index = source-string number
     std::vector<std::string> stack;  // for cycle reports
     std::string out;
@@ -35,6 +36,19 @@ struct Loader {
         std::ostringstream ss;
         ss << in.rdbuf();
         return ss.str();
+    }
+
+    bool exists(const std::string& relative) const
+    {
+        if (root.empty()) return findEmbeddedShader(relative) != nullptr;
+        std::error_code ec;
+        return fs::is_regular_file(root / relative, ec);
+    }
+
+    std::string read(const std::string& relative) const
+    {
+        if (root.empty()) return std::string(findEmbeddedShader(relative)->text);
+        return readFile(root / relative);
     }
 
     int fileIndex(const std::string& name)
@@ -54,13 +68,12 @@ struct Loader {
                 throw Error("shader include cycle: {}{}", cycle, relative);
             }
         }
-        const fs::path full = root / relative;
-        std::error_code ec;
-        if (!fs::is_regular_file(full, ec)) {
-            if (includer.empty()) throw Error("shader file not found: {}", (root / relative).string());
+        if (!exists(relative)) {
+            if (includer.empty())
+                throw Error("shader file not found: {}", root.empty() ? "(embedded) " + relative : (root / relative).string());
             throw Error("shaders/{}:{}: cannot include \"{}\": file not found", includer, includerLine, relative);
         }
-        const std::string text = readFile(full);
+        const std::string text = read(relative);
         stack.push_back(relative);
         const int index = fileIndex(relative);
         // Include once, decided by the GLSL preprocessor: a guard per file. The loader cannot
@@ -94,7 +107,7 @@ struct Loader {
                 // Relative to the including file, then to the root.
                 const fs::path local = fs::path(relative).parent_path() / name;
                 std::string resolved = local.lexically_normal().generic_string();
-                if (!fs::is_regular_file(root / resolved, ec)) resolved = fs::path(name).lexically_normal().generic_string();
+                if (!exists(resolved)) resolved = fs::path(name).lexically_normal().generic_string();
                 load(resolved, relative, lineNumber);
                 out += lineDirective(lineNumber + 1, index);
                 continue;

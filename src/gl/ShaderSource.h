@@ -16,7 +16,8 @@ struct ShaderSource {
 };
 
 /// Loads `path` (relative to `root`), resolving `#include "x"` relative to the including
-/// file first, then to `root`. `defines` are "NAME" or "NAME VALUE", inserted after #version.
+/// file first, then to `root`; an empty `root` reads the copy embedded in the library
+/// (gl/EmbeddedShaders.h). `defines` are "NAME" or "NAME VALUE", inserted after #version.
 /// Throws specula::Error ("file:line: cannot include ...", "include cycle: a -> b -> a").
 ShaderSource loadShaderSource(const std::filesystem::path& root, const std::string& path,
                               const std::vector<std::string>& defines = {});

@@ -6,10 +6,8 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
-#include <optional>
-#include <string>
-#include <string_view>
 
+#include "render/BakeSettings.h"
 #include "shading/EnvironmentMap.h"
 #include "shading/ShadingVariant.h"
 
@@ -20,36 +18,11 @@ class Texture;
 
 namespace specula::render {
 
-struct BakeSettings {
-    std::string name = "default";
-    int cubeSize = 256;       ///< base cube map face size
-    int prefilterSize = 128;  ///< prefiltered level 0 face size
-    int prefilterLevels = 6;  ///< roughness = level / (levels - 1)
-    int prefilterSamples = 256;
-    int lutSize = 128;        ///< DFG table size (n.v × perceptual roughness)
-    int lutSamples = 512;     ///< DFG samples per texel
-    /// Cache file name part for these parameters.
-    std::string key() const;
-};
-
-/// "default", or "reference": the LearnOpenGL tutorial's parameters (512² cube, 128² prefilter
-/// with 5 mips and 1024 samples, 512² LUT with 1024 samples) for side-by-side measurements.
-std::optional<BakeSettings> bakePreset(std::string_view name);
-
-/// $SPECULA_CACHE_DIR, else $XDG_CACHE_HOME/specula, else ~/.cache/specula.
-std::filesystem::path defaultCacheDirectory();
-
 /// The variant whose DFG table a draw shaded with `shading` reads: its D, G and F, the model
 /// and diffuse lobe at their defaults (they do not enter the table). F = none reads Schlick's
 /// table: with F = f0 both terms scale by f0, E = f0 (scale + bias), and scale + bias is the
 /// integral without F, the same for every Fresnel weight.
 ResolvedShading dfgVariant(const ResolvedShading& shading);
-
-struct BakeReport {
-    bool fromCache = false;
-    double milliseconds = 0.0;
-    std::filesystem::path cacheFile; ///< empty when not cached
-};
 
 class ImageBasedLighting {
 public:

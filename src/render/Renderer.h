@@ -2,6 +2,7 @@
 // The forward renderer: a scene in, an HDR frame and a tone-mapped image out.
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,9 +12,10 @@
 #include <glm/glm.hpp>
 
 #include "core/ImageIO.h"
-#include "render/ImageBasedLighting.h"
+#include "render/BakeSettings.h"
 #include "render/PlacedLight.h"
 #include "settings/PassSettings.h"
+#include "shading/EnvironmentMap.h"
 #include "shading/Tonemap.h"
 #include "render/View.h"
 #include "scene/Scene.h"

@@ -1,0 +1,10 @@
+#include "specula/Version.h"
+
+namespace specula {
+
+const char* versionString()
+{
+    return SPECULA_VERSION_STRING;
+}
+
+} // namespace specula
