@@ -118,7 +118,9 @@ void BloomPass::addTo(FrameGraph& graph, GlGraphBackend& backend, GraphTexture h
                       float exposure, bool glowOnly)
 {
     prepare(settings);
-    const GraphTextureDesc& frame = graph.desc(hdr);
+    // A copy: createTexture below grows the graph's resources, which a reference would outlive
+    // (AddressSanitizer: heap-use-after-free, found on branch wt-hard).
+    const GraphTextureDesc frame = graph.desc(hdr);
     const int levels = levelsFor(frame.width, frame.height, settings.levels);
     // Made before the pass: its execute step captures the handles.
     std::vector<GraphTexture> handles;
