@@ -78,6 +78,8 @@ int runRender(const RenderArgs& args)
                   shadows.dropped > 0 ? fmt::format("; {} casting light{} left without one (over --shadows-max-lights or no room)",
                                                     shadows.dropped, shadows.dropped == 1 ? "" : "s")
                                       : std::string());
+    if (settings.debugView == DebugView::ShadowAtlas && shadows.lights == 0)
+        log::warn("--debug-view shadow-atlas: no light of this scene casts a shadow, so the image is the frame itself");
     if (args.stats) {
         // After the written frame, so its start-up figure is unchanged; the first timed frame
         // would include shader compilation, so one untimed frame goes first.

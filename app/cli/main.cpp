@@ -28,7 +28,7 @@ void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
     command->add_option("--brdf-diffuse", frame.brdfDiffuse, "diffuse lobe: lambert (default), oren-nayar, burley");
     command->add_option("--shading", frame.shading, "every material's shading model: pbr, unlit, flat, gouraud, phong, blinn-phong, doom");
     command->add_option("--debug-view", frame.debugView,
-                        "show one buffer: base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, brdf-f, ssao, bloom");
+                        "show one buffer: base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, brdf-f, ssao, bloom, cascades, shadow-atlas");
     command->add_option("--camera", frame.camera, "index of the scene camera to use (default: the first, else framed)");
     command->add_flag("--no-default-lights", frame.noDefaultLights, "never add the default light rig");
     command->add_option("--env", frame.env, "environment: an equirectangular .hdr or .exr, sky (procedural, the default) or none");

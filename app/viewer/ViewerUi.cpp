@@ -435,9 +435,17 @@ void postPanel(Viewer& viewer)
             if (ImGui::Selectable(shadowFilterName(f), f == s.shadows.filter)) s.shadows.filter = f;
         ImGui::EndCombo();
     }
+    // The atlas as the shadow-atlas debug view draws it (white: empty or far), redrawn while open.
+    if (ImGui::TreeNode("shadow atlas")) {
+        if (const uint32_t atlas = viewer.renderer().shadowAtlasImage(256))
+            ImGui::Image(reinterpret_cast<ImTextureID>(uintptr_t(atlas)), ImVec2(256, 256), ImVec2(0, 1), ImVec2(1, 0));
+        else
+            ImGui::TextDisabled("no light has a shadow map");
+        ImGui::TreePop();
+    }
     if (ImGui::BeginCombo("debug view", debugViewName(s.debugView))) {
         // Every view up to the last one (BrdfF), material inputs and BRDF terms included.
-        for (int k = 0; k <= int(DebugView::Cascades); ++k) {
+        for (int k = 0; k <= int(DebugView::ShadowAtlas); ++k) {
             const auto d = DebugView(k);
             if (ImGui::Selectable(debugViewName(d), d == s.debugView)) s.debugView = d;
         }

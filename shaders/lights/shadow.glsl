@@ -6,7 +6,7 @@
 // Without SHADOWS (no light of the frame has a map) it is exactly 1.0 and costs nothing.
 // With it, a light whose GpuLight.spot.z is its slot + 1 is looked up in the shadow atlas
 // (render/passes/ShadowPass, shared/ShadowData.h):
-//   - the view: a directional light's cascade by view depth (blended into the next one over
+//   - the view: a directional light's cascade by view depth (dithered into the next one over
 //     the last part of its range), a spot light's one view, a point light's cube face;
 //   - normal-offset bias (Holbein 2011, "Normal Offset Shadows"): the lookup moves along the
 //     surface normal by a few texels' world size, more at grazing light (sin θ), which with the
@@ -16,6 +16,8 @@
 //     bilinear tap; "pcss" (Fernando 2005, "Percentage-Closer Soft Shadows"): a blocker search
 //     on raw depths, the penumbra from the light's size by similar triangles, then PCF of
 //     that width.
+// The filter, its taps and the kinds of shadowed light are compile-time (SHADOW_* defines of
+// shading/VariantKey.h): the program holds only the paths the frame uses.
 #include "../shared/Bindings.h"
 #include "../shared/LightData.h"
 #include "../shared/ShadowData.h"
@@ -55,13 +57,40 @@ float shadowNoise(vec3 worldPosition)
 #endif
 }
 
-// Tap k of n on a Vogel (golden-angle) disc of radius 1, rotated by `angle`.
-vec2 vogelTap(int k, int n, float angle)
-{
-    float r = sqrt((float(k) + 0.5) / float(n));
-    float theta = float(k) * 2.39996323 + angle;
-    return r * vec2(cos(theta), sin(theta));
-}
+#if !defined(SHADOW_TAPS)
+#define SHADOW_TAPS 16
+#endif
+
+// Vogel (golden-angle) discs of radius 1: tap k of n at radius sqrt((k + 0.5) / n), angle
+// k × 2.39996323 (the golden angle), so the last taps are the outermost and spread around the
+// disc. Constants, rotated per pixel by a 2×2 matrix: no trigonometry per tap.
+#if SHADOW_TAPS == 8
+const vec2 kShadowDisc[8] = vec2[](
+    vec2(0.250000, 0.000000), vec2(-0.319290, 0.292496), vec2(0.048872, -0.556877), vec2(0.402444, 0.524918),
+    vec2(-0.738535, -0.130636), vec2(0.699605, -0.445031), vec2(-0.234004, 0.870484), vec2(-0.446271, -0.859268));
+#elif SHADOW_TAPS == 32
+const vec2 kShadowDisc[32] = vec2[](
+    vec2(0.125000, 0.000000), vec2(-0.159645, 0.146248), vec2(0.024436, -0.278438), vec2(0.201222, 0.262459),
+    vec2(-0.369268, -0.065318), vec2(0.349802, -0.222516), vec2(-0.117002, 0.435242), vec2(-0.223136, -0.429634),
+    vec2(0.484115, 0.176798), vec2(-0.503641, 0.207896), vec2(0.242788, -0.518824), vec2(0.179414, 0.572001),
+    vec2(-0.540757, -0.313380), vec2(0.634370, -0.139464), vec2(-0.387146, 0.550675), vec2(-0.089440, -0.690200),
+    vec2(0.549072, 0.462758), vec2(-0.738878, 0.030555), vec2(0.538955, -0.536332), vec2(-0.036058, 0.779792),
+    vec2(-0.512818, -0.614527), vec2(0.812360, 0.109302), vec2(-0.688311, 0.478909), vec2(0.188086, -0.836061),
+    vec2(0.435033, 0.759191), vec2(-0.850448, -0.271316), vec2(0.826102, -0.381680), vec2(-0.357888, 0.855156),
+    vec2(-0.319407, -0.888034), vec2(0.849909, 0.446688), vec2(-0.944035, 0.248844), vec2(0.536596, -0.834530));
+#else
+const vec2 kShadowDisc[16] = vec2[](
+    vec2(0.176777, 0.000000), vec2(-0.225772, 0.206826), vec2(0.034558, -0.393771), vec2(0.284571, 0.371173),
+    vec2(-0.522223, -0.092374), vec2(0.494695, -0.314685), vec2(-0.165466, 0.615525), vec2(-0.315561, -0.607594),
+    vec2(0.684642, 0.250030), vec2(-0.712256, 0.294009), vec2(0.343355, -0.733729), vec2(0.253730, 0.808932),
+    vec2(-0.764746, -0.443186), vec2(0.897134, -0.197232), vec2(-0.547507, 0.778772), vec2(-0.126487, -0.976090));
+#endif
+// The blocker search of PCSS: always 16 taps.
+const vec2 kBlockerDisc[16] = vec2[](
+    vec2(0.176777, 0.000000), vec2(-0.225772, 0.206826), vec2(0.034558, -0.393771), vec2(0.284571, 0.371173),
+    vec2(-0.522223, -0.092374), vec2(0.494695, -0.314685), vec2(-0.165466, 0.615525), vec2(-0.315561, -0.607594),
+    vec2(0.684642, 0.250030), vec2(-0.712256, 0.294009), vec2(0.343355, -0.733729), vec2(0.253730, 0.808932),
+    vec2(-0.764746, -0.443186), vec2(0.897134, -0.197232), vec2(-0.547507, 0.778772), vec2(-0.126487, -0.976090));
 
 // The view depth in metres of window depth `z` of a view (linear for orthographic views).
 float shadowLinearDepth(ShadowViewData v, float z)
@@ -70,61 +99,70 @@ float shadowLinearDepth(ShadowViewData v, float z)
     return v.params.w > 0.5 ? n + z * (f - n) : n * f / (f - z * (f - n));
 }
 
-// Percentage-closer filtering: the lit fraction over a disc of `radius` texels around uv.
-float shadowPcf(ShadowViewData v, vec2 uv, float depth, float radius, int taps, float angle)
+// The lit fraction at uv: one hardware-compared bilinear tap (the hard filter), or
+// percentage-closer filtering over a disc of `radius` texels, SHADOW_TAPS such taps, the disc
+// turned by `rotation` (cos, sin). The four outermost taps go first: where they agree (all lit
+// or all in shadow) the pixel is done — the disc inside them almost always agrees too — and
+// only pixels in a penumbra pay for the rest.
+float shadowPcf(ShadowViewData v, vec2 uv, float depth, float radius, vec2 rotation)
 {
     vec2 texel = 1.0 / vec2(textureSize(shadowAtlas, 0));
     vec2 lo = v.rect.xy + 0.5 * texel, hi = v.rect.zw - 0.5 * texel;
-    if (taps <= 1 || radius <= 0.0) return texture(shadowAtlas, vec3(clamp(uv, lo, hi), depth));
+#if defined(SHADOW_FILTER_HARD)
+    return texture(shadowAtlas, vec3(clamp(uv, lo, hi), depth));
+#else
+    mat2 turn = mat2(rotation.x, rotation.y, -rotation.y, rotation.x) * radius;
     float lit = 0.0;
-    for (int k = 0; k < taps; ++k) {
-        vec2 p = clamp(uv + vogelTap(k, taps, angle) * radius * texel, lo, hi);
-        lit += texture(shadowAtlas, vec3(p, depth));
-    }
-    return lit / float(taps);
+    for (int k = SHADOW_TAPS - 4; k < SHADOW_TAPS; ++k)
+        lit += texture(shadowAtlas, vec3(clamp(uv + (turn * kShadowDisc[k]) * texel, lo, hi), depth));
+    // A loop, not an if: a CPU rasteriser runs both sides of a branch, but leaves a loop as
+    // soon as none of its pixels is still in it.
+    bool penumbra = lit > 0.0 && lit < 4.0;
+    if (penumbra)
+    for (int k = 0; k < SHADOW_TAPS - 4; ++k)
+        lit += texture(shadowAtlas, vec3(clamp(uv + (turn * kShadowDisc[k]) * texel, lo, hi), depth));
+    return penumbra ? lit * (1.0 / float(SHADOW_TAPS)) : lit * 0.25;
+#endif
 }
 
 // The light seen through one view: `p` already offset along the normal.
-float shadowInView(ShadowViewData v, vec3 p, vec4 record0, vec4 record1, float angle)
+float shadowInView(ShadowViewData v, vec3 p, vec4 record0, vec4 record1, vec2 rotation)
 {
     vec4 c = v.worldToAtlas * vec4(p, 1.0);
     vec3 s = c.xyz / c.w;
     // Outside the view's depth range (beyond a cascade's far side) or its window (a Gouraud
     // vertex outside the camera's view, hence outside its cascade): nothing there casts.
     if (s.z >= 1.0 || any(lessThan(s.xy, v.rect.xy)) || any(greaterThan(s.xy, v.rect.zw))) return 1.0;
-    int filterKind = int(record0.w + 0.5);
-    int taps = int(record1.w + 0.5);
     float radius = record1.y;
-    if (filterKind == SPECULA_SHADOW_FILTER_HARD) return shadowPcf(v, s.xy, s.z, 0.0, 1, angle);
-    if (filterKind == SPECULA_SHADOW_FILTER_PCSS) {
-        vec2 texel = 1.0 / vec2(textureSize(shadowAtlas, 0));
-        vec2 lo = v.rect.xy + 0.5 * texel, hi = v.rect.zw - 0.5 * texel;
-        bool ortho = v.params.w > 0.5;
-        float receiver = shadowLinearDepth(v, s.z);
-        float size = record0.z;
-        // The texel's world size at the receiver; the region of the map whose blockers can
-        // hide part of the light from the receiver (at most 32 texels).
-        float texelAtReceiver = ortho ? v.params.z : v.params.z * receiver;
-        float search = ortho ? size * (receiver - v.params.x) / v.params.z
-                             : size * (receiver - v.params.x) / (receiver * v.params.z * v.params.x);
-        search = clamp(search, 1.0, 32.0);
-        float blockers = 0.0, blockerDepth = 0.0;
-        for (int k = 0; k < 16; ++k) {
-            vec2 q = clamp(s.xy + vogelTap(k, 16, angle) * search * texel, lo, hi);
-            float z = textureLod(shadowDepth, q, 0.0).r;
-            if (z < s.z) {
-                blockers += 1.0;
-                blockerDepth += shadowLinearDepth(v, z);
-            }
+#if defined(SHADOW_FILTER_PCSS)
+    vec2 texel = 1.0 / vec2(textureSize(shadowAtlas, 0));
+    vec2 lo = v.rect.xy + 0.5 * texel, hi = v.rect.zw - 0.5 * texel;
+    bool ortho = v.params.w > 0.5;
+    float receiver = shadowLinearDepth(v, s.z);
+    float size = record0.z;
+    // The texel's world size at the receiver; the region of the map whose blockers can
+    // hide part of the light from the receiver (at most 32 texels).
+    float texelAtReceiver = ortho ? v.params.z : v.params.z * receiver;
+    float search = ortho ? size * (receiver - v.params.x) / v.params.z
+                         : size * (receiver - v.params.x) / (receiver * v.params.z * v.params.x);
+    search = clamp(search, 1.0, 32.0);
+    float blockers = 0.0, blockerDepth = 0.0;
+    mat2 turn = mat2(rotation.x, rotation.y, -rotation.y, rotation.x) * search;
+    for (int k = 0; k < 16; ++k) {
+        vec2 q = clamp(s.xy + (turn * kBlockerDisc[k]) * texel, lo, hi);
+        float z = textureLod(shadowDepth, q, 0.0).r;
+        if (z < s.z) {
+            blockers += 1.0;
+            blockerDepth += shadowLinearDepth(v, z);
         }
-        if (blockers == 0.0) return 1.0;
-        blockerDepth /= blockers;
-        // Similar triangles: the penumbra's full width on the receiver.
-        float penumbra = ortho ? 2.0 * size * (receiver - blockerDepth) : 2.0 * size * (receiver - blockerDepth) / blockerDepth;
-        radius = clamp(0.5 * penumbra / texelAtReceiver, 0.5, 32.0);
-        taps = max(taps, 16);
     }
-    return shadowPcf(v, s.xy, s.z, radius, taps, angle);
+    if (blockers == 0.0) return 1.0;
+    blockerDepth /= blockers;
+    // Similar triangles: the penumbra's full width on the receiver.
+    float penumbra = ortho ? 2.0 * size * (receiver - blockerDepth) : 2.0 * size * (receiver - blockerDepth) / blockerDepth;
+    radius = clamp(0.5 * penumbra / texelAtReceiver, 0.5, 32.0);
+#endif
+    return shadowPcf(v, s.xy, s.z, radius, rotation);
 }
 
 // The cascade of a directional light's map at `worldPosition` (0..count-1); -1 beyond the
@@ -144,6 +182,8 @@ int shadowCascade(GpuLight light, vec3 worldPosition)
     return -1;
 }
 
+// Only the kinds of shadowed light the frame has are compiled in (SHADOW_DIRECTIONAL,
+// SHADOW_SPOT, SHADOW_POINT: shading/VariantKey.h).
 float shadowVisibility(GpuLight light, vec3 worldPosition, vec3 normal, vec3 l)
 {
     int slot = int(light.spot.z + 0.5) - 1;
@@ -152,43 +192,63 @@ float shadowVisibility(GpuLight light, vec3 worldPosition, vec3 normal, vec3 l)
     vec4 record0 = texelFetch(shadowRecords, base);
     vec4 record1 = texelFetch(shadowRecords, base + 1);
     int kind = int(record0.x + 0.5);
-    float angle = 6.28318531 * shadowNoise(worldPosition);
+    float noise = shadowNoise(worldPosition);
+    float angle = 6.28318531 * noise;
+    vec2 rotation = vec2(cos(angle), sin(angle));
     float NoL = clamp(dot(normal, l), 0.0, 1.0);
     float offsetTexels = record1.x * sqrt(1.0 - NoL * NoL);
-    if (kind == SPECULA_SHADOW_DIRECTIONAL) {
+#if defined(SHADOW_DIRECTIONAL)
+#if defined(SHADOW_SPOT) || defined(SHADOW_POINT)
+    if (kind == SPECULA_SHADOW_DIRECTIONAL)
+#endif
+    {
         vec4 splits = texelFetch(shadowRecords, base + 2);
         int count = int(record0.y + 0.5);
         float depth = -(frame.view * vec4(worldPosition, 1.0)).z;
         int cascade = 0;
         while (cascade < count && depth > splits[cascade]) ++cascade;
         if (cascade >= count) return 1.0; // beyond the shadow distance
-        ShadowViewData v = shadowViewAt(base, cascade);
-        float lit = shadowInView(v, worldPosition + normal * (offsetTexels * v.params.z), record0, record1, angle);
-        // Over the last part of a cascade's range, blend into the next one: no seam.
+        // Over the last part of a cascade's range, blend into the next one (no seam) by
+        // dithering: a pixel reads the next cascade with the blend's weight as probability,
+        // so that one lookup per light is made, not two.
         float begin = cascade == 0 ? 0.0 : splits[cascade - 1];
         float blendStart = splits[cascade] - record1.z * (splits[cascade] - begin);
-        if (cascade + 1 < count && depth > blendStart) {
-            ShadowViewData w = shadowViewAt(base, cascade + 1);
-            float next = shadowInView(w, worldPosition + normal * (offsetTexels * w.params.z), record0, record1, angle);
-            lit = mix(lit, next, (depth - blendStart) / max(splits[cascade] - blendStart, 1e-6));
-        }
-        return lit;
+        float weight = (depth - blendStart) / max(splits[cascade] - blendStart, 1e-6);
+        if (cascade + 1 < count && fract(noise * 7.0 + 0.5) < weight) ++cascade;
+        ShadowViewData v = shadowViewAt(base, cascade);
+        return shadowInView(v, worldPosition + normal * (offsetTexels * v.params.z), record0, record1, rotation);
     }
+#endif
+#if defined(SHADOW_SPOT) || defined(SHADOW_POINT)
     vec3 toPoint = worldPosition - light.positionRange.xyz;
     int view = 0;
     float viewDepth;
-    if (kind == SPECULA_SHADOW_POINT) {
+#if defined(SHADOW_POINT) && defined(SHADOW_SPOT)
+    if (kind == SPECULA_SHADOW_POINT)
+#endif
+#if defined(SHADOW_POINT)
+    {
         vec3 a = abs(toPoint);
         if (a.x >= a.y && a.x >= a.z) view = toPoint.x >= 0.0 ? 0 : 1;
         else if (a.y >= a.z) view = toPoint.y >= 0.0 ? 2 : 3;
         else view = toPoint.z >= 0.0 ? 4 : 5;
         viewDepth = max(a.x, max(a.y, a.z));
-    } else {
+    }
+#endif
+#if defined(SHADOW_POINT) && defined(SHADOW_SPOT)
+    else
+#endif
+#if defined(SHADOW_SPOT)
+    {
         viewDepth = dot(toPoint, light.directionType.xyz);
     }
+#endif
     ShadowViewData v = shadowViewAt(base, view);
     float texelAtPoint = v.params.z * max(viewDepth, v.params.x);
-    return shadowInView(v, worldPosition + normal * (offsetTexels * texelAtPoint), record0, record1, angle);
+    return shadowInView(v, worldPosition + normal * (offsetTexels * texelAtPoint), record0, record1, rotation);
+#else
+    return 1.0;
+#endif
 }
 #else
 float shadowVisibility(GpuLight light, vec3 worldPosition, vec3 normal, vec3 l)

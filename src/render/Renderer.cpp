@@ -67,6 +67,7 @@ FrameSettings effectiveSettings(const FrameSettings& requested)
     s.msaa = std::max(s.msaa, 1);
     if (s.debugView == DebugView::Ssao) s.ssao.enabled = true;
     if (s.debugView == DebugView::Bloom) s.bloom.enabled = true;
+    if (s.debugView == DebugView::ShadowAtlas) s.shadows.enabled = true;
     const bool doom = s.materialOverride.model == scene::ShadingModel::Doom;
     // The Doom model's frame holds only palette colours: one sample a pixel (a resolve would
     // blend them) and, as for the views below, nothing that scales or curves values.
@@ -111,6 +112,8 @@ struct Renderer::Impl {
     std::unique_ptr<Frame> last;
     FrameSettings lastSettings;
     float lastExposureScale = 1.0f;
+    gl::Texture atlasImage; // Renderer::shadowAtlasImage
+    gl::Framebuffer atlasImageTarget;
 
     ~Impl()
     {
@@ -354,6 +357,21 @@ std::array<uint32_t, 5> Renderer::materialTextureNames(int material) const
     const MaterialBinding& binding = mImpl->stores.scene->materials()[size_t(material)];
     for (size_t i = 0; i < names.size(); ++i) names[i] = binding.textures[i] ? binding.textures[i]->id() : 0u;
     return names;
+}
+
+uint32_t Renderer::shadowAtlasImage(int size)
+{
+    Impl& r = *mImpl;
+    const gl::Texture* atlas = r.passes.shadows.atlas();
+    if (!atlas || !r.passes.shadows.variant().active() || size <= 0) return 0;
+    if (!r.atlasImage || r.atlasImage.width() != size) {
+        r.atlasImage = gl::Texture({.format = gl::Format::RGBA8, .width = size, .height = size, .label = "shadow atlas image"});
+        r.atlasImageTarget = gl::Framebuffer("shadow atlas image");
+        r.atlasImageTarget.attachColor(0, r.atlasImage);
+        r.atlasImageTarget.check();
+    }
+    r.passes.debugView().drawShadowAtlas(r.stores.state, *atlas, r.atlasImageTarget, size, size, r.stores.emptyVertexArray);
+    return r.atlasImage.id();
 }
 
 void Renderer::setMaterialShading(int material, const scene::MaterialShading& shading)

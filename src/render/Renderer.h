@@ -211,6 +211,9 @@ public:
     /// GL texture names of a material's base colour, metallic-roughness, normal, occlusion and
     /// emissive textures (0 where it has none), for UI thumbnails (ImGui::Image).
     std::array<uint32_t, 5> materialTextureNames(int material) const;
+    /// A picture of the last frame's shadow atlas, drawn now as the shadow-atlas debug view
+    /// draws it, `size`² RGBA8 (UI, ImGui::Image): its GL texture name, 0 when no light had a map.
+    uint32_t shadowAtlasImage(int size);
 
 private:
     struct Impl;

@@ -8,7 +8,8 @@ std::optional<DebugView> parseDebugView(std::string_view name)
     if (name == "ssao") return DebugView::Ssao;
     if (name == "bloom") return DebugView::Bloom;
     for (DebugView view : {DebugView::BaseColor, DebugView::Normal, DebugView::Roughness, DebugView::Metallic, DebugView::Occlusion,
-                           DebugView::Emissive, DebugView::BrdfD, DebugView::BrdfG, DebugView::BrdfF, DebugView::Cascades})
+                           DebugView::Emissive, DebugView::BrdfD, DebugView::BrdfG, DebugView::BrdfF, DebugView::Cascades,
+                           DebugView::ShadowAtlas})
         if (name == debugViewName(view)) return view;
     return std::nullopt;
 }
@@ -29,6 +30,7 @@ const char* debugViewName(DebugView view)
     case DebugView::BrdfG: return "brdf-g";
     case DebugView::BrdfF: return "brdf-f";
     case DebugView::Cascades: return "cascades";
+    case DebugView::ShadowAtlas: return "shadow-atlas";
     }
     return "none";
 }

@@ -23,6 +23,9 @@ enum class DebugView {
     BrdfG,     ///< G for the first light
     BrdfF,     ///< F (rgb) for the first light
     Cascades,  ///< the first shadowed directional light's cascade (red, green, blue, yellow) × its shadow
+    /// The shadow atlas, fitted into the frame: grey = 1 − (1 − window depth)^¼ (white: empty or
+    /// far; the curve keeps perspective depths near 1 apart), turns shadows on.
+    ShadowAtlas,
 };
 
 std::optional<DebugView> parseDebugView(std::string_view name);

@@ -3,6 +3,7 @@
 #include <array>
 
 #include "shaders/shared/MaterialData.h"
+#include "shaders/shared/ShadowData.h"
 
 namespace specula::render {
 namespace {
@@ -14,12 +15,17 @@ constexpr uint64_t kEnergyCompensation = 1u << 10;
 constexpr uint64_t kSsao = 1u << 11;
 constexpr uint64_t kDoomIndexed = 1u << 12;
 constexpr uint64_t kShadows = 1u << 13;
+constexpr uint64_t kShadowDirectional = uint64_t(1) << 32, kShadowSpot = uint64_t(1) << 33, kShadowPoint = uint64_t(1) << 34;
+constexpr int kShadowFilterShift = 35, kShadowTapsShift = 37;
 constexpr int kDebugShift = 16, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
               kDiffuseShift = 30;
 constexpr uint64_t field(int shift, int bits) { return ((uint64_t(1) << bits) - 1) << shift; }
 constexpr uint64_t kDebugMask = field(kDebugShift, 4), kModelMask = field(kModelShift, 3),
                    kDistributionMask = field(kDistributionShift, 2), kGeometryMask = field(kGeometryShift, 3),
-                   kFresnelMask = field(kFresnelShift, 2), kDiffuseMask = field(kDiffuseShift, 2);
+                   kFresnelMask = field(kFresnelShift, 2), kDiffuseMask = field(kDiffuseShift, 2),
+                   kShadowFilterMask = field(kShadowFilterShift, 2), kShadowTapsMask = field(kShadowTapsShift, 2);
+// The shadow filter's field: PCF (the default) is 0 and has no define; the taps' field: 16 is 0.
+constexpr uint64_t kFilterHard = 1, kFilterPcss = 2, kTaps8 = 1, kTaps32 = 2;
 template <typename E>
 constexpr uint64_t at(int shift, E value) { return uint64_t(value) << shift; }
 
@@ -60,6 +66,13 @@ constexpr std::array kTable = {
     VariantDefine{kSsao, kSsao, "SSAO", K::FrameFeature},
     VariantDefine{kDoomIndexed, kDoomIndexed, "DOOM_INDEXED", K::FrameFeature},
     VariantDefine{kShadows, kShadows, "SHADOWS", K::FrameFeature},
+    VariantDefine{kShadowDirectional, kShadowDirectional, "SHADOW_DIRECTIONAL", K::FrameFeature},
+    VariantDefine{kShadowSpot, kShadowSpot, "SHADOW_SPOT", K::FrameFeature},
+    VariantDefine{kShadowPoint, kShadowPoint, "SHADOW_POINT", K::FrameFeature},
+    VariantDefine{kShadowFilterMask, at(kShadowFilterShift, kFilterHard), "SHADOW_FILTER_HARD", K::Shadow},
+    VariantDefine{kShadowFilterMask, at(kShadowFilterShift, kFilterPcss), "SHADOW_FILTER_PCSS", K::Shadow},
+    VariantDefine{kShadowTapsMask, at(kShadowTapsShift, kTaps8), "SHADOW_TAPS 8", K::Shadow},
+    VariantDefine{kShadowTapsMask, at(kShadowTapsShift, kTaps32), "SHADOW_TAPS 32", K::Shadow},
     VariantDefine{SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE, SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE, "HAS_BASE_COLOR_TEXTURE", K::MaterialFeature},
     VariantDefine{SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE, SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE,
                   "HAS_METALLIC_ROUGHNESS_TEXTURE", K::MaterialFeature},
@@ -72,6 +85,7 @@ constexpr std::array kTable = {
     VariantDefine{SPECULA_MATERIAL_USE_VERTEX_COLOR, SPECULA_MATERIAL_USE_VERTEX_COLOR, "VERTEX_COLOR", K::MaterialFeature},
 };
 static_assert((kFeatureMask & (kIbl | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kDebugMask)) == 0);
+static_assert((kDiffuseMask & (kShadowDirectional | kShadowSpot | kShadowPoint | kShadowFilterMask | kShadowTapsMask)) == 0);
 
 } // namespace
 
@@ -82,11 +96,11 @@ std::span<const VariantDefine> forwardVariantTable()
 
 bool isMaterialDebugView(DebugView view)
 {
-    return view != DebugView::None && view != DebugView::Ssao && view != DebugView::Bloom;
+    return view != DebugView::None && view != DebugView::Ssao && view != DebugView::Bloom && view != DebugView::ShadowAtlas;
 }
 
 ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& shading, DebugView debugView, bool ibl,
-                                    bool energyCompensation, bool ssao, bool doomIndexed, bool shadows)
+                                    bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows)
 {
     uint64_t key = features & kFeatureMask;
     key |= at(kModelShift, shading.model);
@@ -99,7 +113,16 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
     if (energyCompensation) key |= kEnergyCompensation;
     if (ssao) key |= kSsao;
     if (doomIndexed) key |= kDoomIndexed;
-    if (shadows) key |= kShadows;
+    if (shadows.active()) {
+        key |= kShadows;
+        if (shadows.directional) key |= kShadowDirectional;
+        if (shadows.spot) key |= kShadowSpot;
+        if (shadows.point) key |= kShadowPoint;
+        if (shadows.filter == SPECULA_SHADOW_FILTER_HARD) key |= at(kShadowFilterShift, kFilterHard);
+        if (shadows.filter == SPECULA_SHADOW_FILTER_PCSS) key |= at(kShadowFilterShift, kFilterPcss);
+        if (shadows.taps <= 8) key |= at(kShadowTapsShift, kTaps8);
+        if (shadows.taps >= 32) key |= at(kShadowTapsShift, kTaps32);
+    }
     return {key};
 }
 

@@ -19,7 +19,19 @@ struct VariantDefine {
     uint64_t value;
     const char* define;
     /// The row's group: flags combine freely; rows of one field exclude each other.
-    enum class Kind : uint8_t { MaterialFeature, FrameFeature, DebugView, ShadingModel, Brdf } kind;
+    enum class Kind : uint8_t { MaterialFeature, FrameFeature, DebugView, ShadingModel, Brdf, Shadow } kind;
+};
+
+/// What this frame's shadow maps ask of the forward program (lights/shadow.glsl): which kinds
+/// of shadowed light there are, the filter and its taps. Compiled in, so that the program holds
+/// only the paths the frame uses — a CPU rasteriser (llvmpipe) runs every side of a branch.
+/// No kind: no SHADOWS variant at all.
+struct ShadowVariant {
+    bool directional = false, spot = false, point = false;
+    int filter = 1; ///< SPECULA_SHADOW_FILTER_* (shaders/shared/ShadowData.h): 0 hard, 1 PCF, 2 PCSS
+    int taps = 16;  ///< 8, 16 or 32
+    bool active() const { return directional || spot || point; }
+    bool operator==(const ShadowVariant&) const = default;
 };
 
 /// Every row, in the order the defines are emitted.
@@ -31,9 +43,9 @@ struct ForwardVariant {
     /// `features`: SPECULA_MATERIAL_* bits (the shading bits above them are ignored: pass the
     /// resolved shading). A model other than the physically based one has no BRDF choices, so
     /// its key holds none and variants that differ only there share one program. `shadows`:
-    /// some light of the frame has a shadow map (SHADOWS: lights/shadow.glsl samples them).
+    /// the frame's shadow maps (SHADOWS and SHADOW_*: lights/shadow.glsl samples them).
     static ForwardVariant make(uint32_t features, const ResolvedShading& shading, DebugView debugView, bool ibl,
-                               bool energyCompensation, bool ssao, bool doomIndexed, bool shadows = false);
+                               bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows = {});
 
     ResolvedShading shading() const;
     /// The material or BRDF debug view the key selects, if any.
@@ -44,8 +56,8 @@ struct ForwardVariant {
     bool operator==(const ForwardVariant&) const = default;
 };
 
-/// Whether `view` replaces shading in the forward pass (a material or BRDF view; the SSAO and
-/// bloom views are passes of their own).
+/// Whether `view` replaces shading in the forward pass (a material or BRDF view; the SSAO,
+/// bloom and shadow-atlas views are passes of their own).
 bool isMaterialDebugView(DebugView view);
 
 } // namespace specula::render

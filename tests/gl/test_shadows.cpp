@@ -25,6 +25,7 @@
 #include "scene/DemoScenes.h"
 #include "scene/Procedural.h"
 #include "shading/Brdf.h"
+#include "shading/ShadowMaps.h"
 #include "settings/PassSettings.h"
 
 using namespace specula;
@@ -421,4 +422,62 @@ TEST_F(GlTest, StillScenesDrawTheirShadowMapsOnce)
     settings.shadows.cache = false;
     renderer.render(moved, settings);
     EXPECT_EQ(renderer.stats().shadows.rendered, 11) << "with the cache off every view, every frame";
+}
+
+// The shadow-atlas view: a spot light 4 m straight above a floor sees the floor at view depth
+// 4 m in every texel of its tile (the floor is perpendicular to its axis), so its tile is one
+// grey, 1 − (1 − d)^¼ of the window depth d of a perspective view at 4 m — computed here from
+// the view's near and far planes — and the rest of the atlas is white (cleared to the far
+// plane). Around the atlas's square, dark blue. Fails when the view shows the frame instead,
+// or a tile is never drawn (a black square: depth 0).
+TEST_F(GlTest, ShadowAtlasViewShowsEachTileAtItsDepth)
+{
+    ShadowScene sc;
+    sc.light.type = scene::Light::Type::Spot;
+    sc.light.intensity = 100.0f;
+    sc.light.range = 10.0f;
+    sc.lightPosition = {0.0f, 4.0f, 0.0f};
+    sc.lightDirection = {0.0f, -1.0f, 0.0f};
+    render::Renderer renderer;
+    renderer.setScene(buildScene(sc));
+    render::FrameSettings settings;
+    settings.width = 256;
+    settings.height = 128;
+    settings.msaa = 1;
+    settings.debugView = DebugView::ShadowAtlas;
+    renderer.render(render::lookAtView(sc.eye, sc.target, {0, 1, 0}, sc.yfov, 2.0f, 0.1f, 100.0f), settings);
+    ASSERT_EQ(renderer.stats().shadows.lights, 1);
+    const ImageRGBA8 image = renderer.readImage();
+    writePng(std::filesystem::path(SPECULA_TEST_OUTPUT_DIR) / "shadows" / "atlas-view.png", image);
+
+    const render::ShadowView view = render::spotView(sc.lightPosition, sc.lightDirection, sc.light.outerConeAngle, sc.light.range, 64);
+    const double n = view.near, f = view.far, z = 4.0;
+    const double ndc = (f + n) / (f - n) - 2.0 * f * n / ((f - n) * z);
+    const double depth = 0.5 * ndc + 0.5;
+    const double expected = 255.0 * (1.0 - std::pow(1.0 - depth, 0.25));
+    int grey = 0, white = 0, other = 0;
+    int minX = 1 << 30, maxX = -1, minY = 1 << 30, maxY = -1;
+    std::string firstOther;
+    for (int y = 0; y < 128; ++y)
+        for (int x = 0; x < 256; ++x) {
+            const uint8_t* p = &image.pixels[size_t(y * 256 + x) * 4];
+            if (x < 64 || x >= 192) {
+                EXPECT_TRUE(p[0] == 0 && p[1] == 0 && p[2] == 51) << "outside the atlas at " << x << "," << y;
+                continue;
+            }
+            if (p[0] == 255 && p[1] == 255 && p[2] == 255) {
+                ++white;
+            } else if (std::abs(p[0] - expected) <= 1.5 && p[1] == p[0] && p[2] == p[0]) {
+                ++grey;
+                minX = std::min(minX, x), maxX = std::max(maxX, x), minY = std::min(minY, y), maxY = std::max(maxY, y);
+            } else if (++other == 1) {
+                firstOther = std::to_string(x) + "," + std::to_string(y) + ": " + std::to_string(p[0]) + " (tile grey " +
+                             std::to_string(expected) + ")";
+            }
+        }
+    EXPECT_EQ(other, 0) << firstOther;
+    ASSERT_GT(grey, 16) << "the spot light's tile";
+    EXPECT_GT(white, grey) << "the rest of the atlas is empty";
+    EXPECT_EQ(grey, (maxX - minX + 1) * (maxY - minY + 1)) << "the tile is one square of one grey";
+    EXPECT_EQ(maxX - minX, maxY - minY);
 }

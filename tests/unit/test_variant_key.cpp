@@ -58,6 +58,21 @@ TEST(VariantKey, MaterialDebugViewsSetTheirDefineOthersDoNot)
     EXPECT_TRUE(view(DebugView::Normal).debugView());
     EXPECT_TRUE(view(DebugView::Ssao).defines().empty()) << "the SSAO view is a pass of its own";
     EXPECT_TRUE(view(DebugView::Bloom).defines().empty());
+    EXPECT_TRUE(view(DebugView::ShadowAtlas).defines().empty()) << "the atlas view is a pass of its own";
+}
+
+TEST(VariantKey, ShadowsCompileInOnlyTheKindsAndFilterTheFrameUses)
+{
+    const auto with = [](const ShadowVariant& s) { return ForwardVariant::make(0, {}, DebugView::None, false, false, false, false, s).defines(); };
+    using V = std::vector<std::string>;
+    EXPECT_TRUE(with({}).empty()) << "no shadowed light: no SHADOWS variant, whatever the filter";
+    EXPECT_TRUE(with({.filter = 2, .taps = 32}).empty());
+    // PCF with 16 taps is the default: no define of its own.
+    EXPECT_EQ(with({.point = true}), (V{"SHADOWS", "SHADOW_POINT"}));
+    EXPECT_EQ(with({.directional = true, .spot = true, .filter = 0, .taps = 8}),
+              (V{"SHADOWS", "SHADOW_DIRECTIONAL", "SHADOW_SPOT", "SHADOW_FILTER_HARD", "SHADOW_TAPS 8"}));
+    EXPECT_EQ(with({.directional = true, .spot = true, .point = true, .filter = 2, .taps = 32}),
+              (V{"SHADOWS", "SHADOW_DIRECTIONAL", "SHADOW_SPOT", "SHADOW_POINT", "SHADOW_FILTER_PCSS", "SHADOW_TAPS 32"}));
 }
 
 TEST(VariantKey, TableRowsAreDistinct)

@@ -4,6 +4,8 @@
 #include "render/graph/GlGraphBackend.h"
 #include "render/passes/Fullscreen.h"
 
+#include <glm/vec2.hpp>
+
 namespace specula::render {
 
 void DebugViewPass::addTo(FrameGraph& graph, const FrameContext& frame, GraphTexture occlusion, GraphTexture target)
@@ -23,6 +25,32 @@ void DebugViewPass::addTo(FrameGraph& graph, const FrameContext& frame, GraphTex
                                            .program = &mProgram,
                                            .input = &frame.backend.texture(occlusion),
                                            .triangle = &frame.stores.emptyVertexArray});
+        });
+}
+
+void DebugViewPass::drawShadowAtlas(gl::State& state, const gl::Texture& atlas, const gl::Framebuffer& target, int width,
+                                    int height, const gl::VertexArray& triangle)
+{
+    if (!mAtlasProgram) {
+        mAtlasProgram = gl::Program({.vertex = "post/fullscreen.vert", .fragment = "post/shadow_atlas.frag", .label = "shadow atlas view"});
+        mFrameSize = mAtlasProgram.uniformLocation("uFrameSize");
+    }
+    mAtlasProgram.set(mFrameSize, glm::vec2(float(width), float(height)));
+    drawFullscreen(state, {.target = &target, .width = width, .height = height, .program = &mAtlasProgram, .input = &atlas,
+                           .sampler = &mNearest, .triangle = &triangle});
+}
+
+void DebugViewPass::addShadowAtlas(FrameGraph& graph, const FrameContext& frame, GraphTexture atlas, GraphTexture target)
+{
+    graph.addPass(
+        "debug view: shadow atlas",
+        [&](FrameGraph::Builder& b) {
+            b.read(atlas, Use::Sample);
+            b.write(target, Use::ColorAttachment);
+        },
+        [this, &frame, atlas, target] {
+            drawShadowAtlas(frame.state(), frame.backend.texture(atlas), frame.backend.framebuffer({target}), frame.width,
+                            frame.height, frame.stores.emptyVertexArray);
         });
 }
 

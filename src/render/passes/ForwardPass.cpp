@@ -79,7 +79,7 @@ struct ForwardPass::Impl {
     std::map<uint64_t, ForwardProgram> programs; // node-based: pointers stay valid
     std::vector<DrawProgram> materialPrograms;   // this frame's, by material
     SkyboxPass skybox;
-    bool shadows = false;                        // this frame's SHADOWS variants
+    ShadowVariant shadows;                       // this frame's SHADOWS variants
 
     ForwardProgram& program(const FrameContext& frame, uint32_t features)
     {
@@ -116,7 +116,7 @@ bool ForwardPass::anyDoomMaterial(const FrameContext& frame)
     });
 }
 
-const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext& frame, bool shadows)
+const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows)
 {
     Impl& r = *mImpl;
     r.shadows = shadows;

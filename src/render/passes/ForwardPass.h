@@ -40,8 +40,8 @@ public:
     ForwardPass& operator=(const ForwardPass&) = delete;
 
     /// Each material's program for this frame (compiled on first use), and the DFG table it
-    /// reads, baked on first use. `shadows`: some light has a shadow map (SHADOWS variants).
-    const std::vector<DrawProgram>& prepareMaterials(const FrameContext& frame, bool shadows = false);
+    /// reads, baked on first use. `shadows`: what the frame's shadow maps ask (SHADOWS variants).
+    const std::vector<DrawProgram>& prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows = {});
     /// The draw lists of the frame's view, sorted with prepareMaterials' programs.
     FrameDrawLists drawLists(const FrameContext& frame) const;
 

@@ -129,7 +129,7 @@ struct ShadowPass::Impl {
     std::vector<DrawProgram> drawPrograms; ///< by material
     std::map<TileKey, uint64_t> tileContents; ///< what each tile of the atlas holds now
     std::vector<PlannedLight> planned;
-    bool active = false;
+    ShadowVariant variant; // of the last addTo: no kind when no light has a map
 
     CasterProgram& casterProgram(uint32_t features)
     {
@@ -152,13 +152,18 @@ struct ShadowPass::Impl {
         return p;
     }
 
-    void ensureAtlas(int size)
+    void ensureAtlas(gl::State& state, int size)
     {
         if (atlas && atlas.width() == size) return;
         atlas = gl::Texture({.format = gl::Format::Depth32F, .width = size, .height = size, .label = "shadow atlas"});
         framebuffer = gl::Framebuffer("shadow atlas");
         framebuffer.attachDepth(atlas);
         framebuffer.check();
+        // The far plane everywhere, so that a tile never drawn (the shadow-atlas view shows
+        // them) reads as empty rather than as a caster at the near plane.
+        state.noScissor();
+        state.apply({}); // depth writes on for the clear
+        framebuffer.clearDepth(1.0f);
         tileContents.clear();
     }
 
@@ -222,9 +227,9 @@ struct ShadowPass::Impl {
 ShadowPass::ShadowPass() : mImpl(std::make_unique<Impl>()) {}
 ShadowPass::~ShadowPass() = default;
 
-bool ShadowPass::active() const
+const ShadowVariant& ShadowPass::variant() const
 {
-    return mImpl->active;
+    return mImpl->variant;
 }
 
 const gl::Texture* ShadowPass::atlas() const
@@ -235,7 +240,7 @@ const gl::Texture* ShadowPass::atlas() const
 void ShadowPass::bind(gl::State& state) const
 {
     const Impl& r = *mImpl;
-    if (!r.active) return;
+    if (!r.variant.active()) return;
     state.bindTexture(SPECULA_UNIT_SHADOW_ATLAS, r.atlas);
     state.bindSampler(SPECULA_UNIT_SHADOW_ATLAS, &r.compare);
     state.bindTexture(SPECULA_UNIT_SHADOW_DEPTH, r.atlas);
@@ -250,7 +255,7 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
     const ShadowSettings& s = frame.settings.shadows;
     LightBuffer& lights = frame.stores.lights;
     FrameStats::Shadows& stats = frame.stats.shadows;
-    r.active = false;
+    r.variant = {};
     r.planned.clear();
     const GpuScene* scene = frame.stores.scene.get();
     if (!s.enabled || isDoomFrame(frame.settings) || !scene || lights.count() == 0) {
@@ -278,7 +283,7 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
 
     // Tiles: cascades first (they cover the whole view), then by importance, halving a
     // light's tiles until they fit.
-    r.ensureAtlas(q.atlas);
+    r.ensureAtlas(frame.state(), q.atlas);
     ShadowAtlas atlas(q.atlas, q.minTile);
     // The camera's near and far planes (an infinite far plane: 1e30).
     const glm::mat4& P = frame.view.projection;
@@ -413,7 +418,13 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
     stats.dropped = int(dropped.size());
     stats.atlasSize = q.atlas;
     if (r.planned.empty()) return {};
-    r.active = true;
+    // PCSS filters its penumbra with at least 16 taps (its blocker search has 16).
+    r.variant = {.filter = filterId(s.filter), .taps = s.filter == ShadowFilter::Pcss ? std::max(q.taps, 16) : q.taps};
+    for (const PlannedLight& light : r.planned) {
+        r.variant.directional |= light.kind == SPECULA_SHADOW_DIRECTIONAL;
+        r.variant.spot |= light.kind == SPECULA_SHADOW_SPOT;
+        r.variant.point |= light.kind == SPECULA_SHADOW_POINT;
+    }
 
     // The casters' programs, by material.
     r.drawPrograms.clear();

@@ -21,6 +21,7 @@
 #include <memory>
 
 #include "render/graph/FrameGraph.h"
+#include "shading/VariantKey.h"
 
 namespace specula::gl {
 class State;
@@ -44,8 +45,9 @@ public:
     /// for the forward pass to sample, or no texture when no light has a map this frame.
     GraphTexture addTo(FrameGraph& graph, const FrameContext& frame);
 
-    /// Whether the last addTo gave some light a map (the forward pass's SHADOWS variant).
-    bool active() const;
+    /// What the last addTo's maps ask of the forward pass's program (its SHADOWS variant:
+    /// no kind when no light has a map).
+    const ShadowVariant& variant() const;
     /// Binds the atlas (compared and raw) and the records for shading (lights/shadow.glsl).
     void bind(gl::State& state) const;
     /// The atlas (the shadow-atlas debug view), when made.

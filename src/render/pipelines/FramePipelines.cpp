@@ -35,6 +35,8 @@ void finish(Frame& f, FramePasses& passes, const FrameContext& frame)
     } else {
         out.occlusion = {};
     }
+    if (frame.settings.debugView == DebugView::ShadowAtlas && out.shadows)
+        passes.debugView().addShadowAtlas(f.graph, frame, out.shadows, out.ldr);
     f.graph.exportTexture(out.ldr);
     if (out.hdr) f.graph.exportTexture(out.hdr);
     if (out.msaaColor) f.graph.exportTexture(out.msaaColor);
@@ -107,7 +109,7 @@ void buildFrame(Frame& f, FramePasses& passes, const FrameContext& frame)
 {
     // Shadows first: whether any light has a map picks the forward programs.
     f.outputs.shadows = passes.shadows.addTo(f.graph, frame);
-    passes.forward.prepareMaterials(frame, passes.shadows.active());
+    passes.forward.prepareMaterials(frame, passes.shadows.variant());
     f.lists = passes.forward.drawLists(frame);
     if (isDoomFrame(frame.settings)) {
         buildDoom(f, passes, frame);
