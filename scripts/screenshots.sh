@@ -32,3 +32,12 @@ $G demo --width 360 --height 240 --columns 4 -o "$OUT/gallery-demo.png"
 $G "$SHARED/models/DamagedHelmet/DamagedHelmet.glb" --width 300 --height 300 --columns 4 -o "$OUT/gallery-DamagedHelmet.png"
 $G doom --env none --width 320 --height 200 --columns 4 -o "$OUT/gallery-doom.png"
 $S doom --width 640 --height 400 -o "$OUT/doom.png"
+# Shadows (docs/shadows.md): the models made to show them, beside their authors' screenshots
+# (copied from the assets, CC BY 4.0), under a dim constant environment like the screenshots'.
+for model in ShadowsDirectional/shadows-directional ShadowsSpot/shadows-spot; do
+  name=$(dirname "$model")
+  $S "$SHARED/models/$model.gltf" --env-color 0.1,0.1,0.1 --width 960 --height 540 -o "$OUT/$name.png"
+  cp "$SHARED/models/$name/screenshot.png" "$OUT/$name-reference.png"
+done
+$S --debug-view shadow-atlas --width 540 --height 540 -o "$OUT/demo-shadow-atlas.png"
+$S --debug-view cascades --width 480 --height 270 -o "$OUT/demo-cascades.png"

@@ -59,6 +59,10 @@ std::vector<Golden> goldens()
         {"doom-pbr", "doom --shading pbr" + size, 0.5, 0.002,
          "the Doom level lit by its lamps' point lights with the physically based model: textures "
          "without filtering, cutout sprites, no environment"},
+        {"ShadowsDirectional", kAssets + "/models/ShadowsDirectional/shadows-directional.gltf --env-color 0.1,0.1,0.1" + size, 0.5,
+         0.002, "the sun's cascaded shadow maps on the model made to show them (its glTF camera and light), PCF"},
+        {"ShadowsSpot", kAssets + "/models/ShadowsSpot/shadows-spot.gltf --env-color 0.1,0.1,0.1" + size, 0.5, 0.002,
+         "a spot light's shadow map: the sphere's shadow inside the cone's lit disc, the cone's wedge"},
         {"doom", "doom" + size, 1.0, 0.01,
          "Doom's 8-bit frame: a colour that rounds differently picks a neighbouring palette entry, "
          "a jump of several levels, so more outliers are allowed than for smooth images"},
