@@ -41,3 +41,4 @@ for model in ShadowsDirectional/shadows-directional ShadowsSpot/shadows-spot; do
 done
 $S --debug-view shadow-atlas --width 540 --height 540 -o "$OUT/demo-shadow-atlas.png"
 $S --debug-view cascades --width 480 --height 270 -o "$OUT/demo-cascades.png"
+$S "$SHARED/models/BreakfastRoom/BreakfastRoom.gltf" --env none --width 480 --height 270 -o "$OUT/BreakfastRoom-sun.png"
