@@ -187,7 +187,7 @@ void main()
     vec3 specularAlbedo = (surface.f0 * dfg.x + surface.f90 * dfg.y) * energyCompensation;
     // What the specular lobe reflects, the diffuse lobe below it cannot: 1 - E keeps a white
     // dielectric in a white furnace at or below the environment's radiance.
-    vec3 diffuseIbl = irradianceSh(toEnvironment(n)) * surface.diffuseColor * INV_PI * (1.0 - specularAlbedo);
+    vec3 diffuseIbl = irradianceCube(toEnvironment(n)) * surface.diffuseColor * INV_PI * (1.0 - specularAlbedo);
     vec3 specularIbl = prefilteredRadiance(specularDominantDirection(n, r, perceptualRoughness), perceptualRoughness) * specularAlbedo;
     float specularAo = specularOcclusion(NoV, occlusion, perceptualRoughness);
 #if defined(HAS_NORMAL_TEXTURE)

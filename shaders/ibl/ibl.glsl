@@ -1,13 +1,26 @@
-// Image-based lighting for the forward pass: SH irradiance for the diffuse lobe, the
-// prefiltered radiance and DFG table (split sum, Karis 2013) for the specular lobe.
+// Image-based lighting for the forward pass: the irradiance cube (the exact cosine convolution
+// of the environment, ibl/irradiance.comp) for the diffuse lobe, the prefiltered radiance and
+// DFG table (split sum, Karis 2013) for the specular lobe.
 #include "../shared/EnvironmentData.h"
 
 layout(std140, binding = SPECULA_BINDING_ENVIRONMENT) uniform EnvironmentBlock { EnvironmentData environment; };
 layout(binding = SPECULA_UNIT_PREFILTERED) uniform samplerCube uPrefiltered;
+layout(binding = SPECULA_UNIT_IRRADIANCE) uniform samplerCube uIrradiance;
 
 vec3 toEnvironment(vec3 worldDirection)
 {
     return mat3(environment.worldToEnvironment) * worldDirection;
+}
+
+// Irradiance E(n), lux, at environment-space normal n: the cube (the environment less its
+// brightest parts) plus those parts summed here, exactly — a cube's bilinear filter would round
+// the kink of max(0, n·d) at a bright source's terminator.
+vec3 irradianceCube(vec3 n)
+{
+    vec3 e = textureLod(uIrradiance, n, 0.0).rgb;
+    for (int i = 0; i < SPECULA_IBL_BRIGHT_SOURCES; ++i)
+        e += environment.brightFlux[i].rgb * max(dot(n, environment.brightDirection[i].xyz), 0.0);
+    return e;
 }
 
 // Irradiance E(n) from the order-2 SH of the radiance (Ramamoorthi & Hanrahan 2001, eq. 8,

@@ -31,6 +31,7 @@
 #define SPECULA_UNIT_SHADOW_DEPTH 6      // the same atlas, raw depths (PCSS blocker search)
 #define SPECULA_UNIT_SHADOW_RECORDS 7    // shadow records, RGBA32F buffer texture (shared/ShadowData.h)
 #define SPECULA_UNIT_LIGHTS 10           // the light buffer's texel view (lights/light_list.glsl)
+#define SPECULA_UNIT_IRRADIANCE 11       // the irradiance cube (ibl/ibl.glsl)
 #define SPECULA_UNIT_SSAO 12             // forward pass: the blurred ambient occlusion
 #define SPECULA_BINDING_SSAO 5           // uniform buffer: SsaoData
 #define SPECULA_BINDING_EXPOSURE_PARAMS 6 // uniform buffer: ExposureParams

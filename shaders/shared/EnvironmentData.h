@@ -4,6 +4,10 @@
 #endif
 #include "Prelude.h"
 
+// The brightest parts of the environment, summed per pixel by the diffuse term beside the
+// irradiance cube (shading/EnvironmentMap: takeBrightest).
+#define SPECULA_IBL_BRIGHT_SOURCES 32
+
 SPECULA_SHARED_BEGIN
 
 struct EnvironmentData {
@@ -11,10 +15,12 @@ struct EnvironmentData {
     mat4 worldToEnvironment;    // rotation about +Y taking world directions to the map's own
     mat4 inverseViewProjection; // for the skybox's view rays
     vec4 params;                // x intensity, y prefiltered mip count, z skybox lod (-1 = sharp), w skybox on
+    vec4 brightDirection[SPECULA_IBL_BRIGHT_SOURCES]; // xyz, environment space
+    vec4 brightFlux[SPECULA_IBL_BRIGHT_SOURCES];      // rgb, lux at normal incidence (0: none)
 };
 
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::EnvironmentData) == 9 * 16 + 2 * 64 + 16);
+static_assert(sizeof(specula::shared::EnvironmentData) == 9 * 16 + 2 * 64 + 16 + 2 * SPECULA_IBL_BRIGHT_SOURCES * 16);
 #endif

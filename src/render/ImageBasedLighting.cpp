@@ -17,6 +17,7 @@
 #include "core/Log.h"
 #include "core/Timer.h"
 #include "gl/Debug.h"
+#include "gl/Buffer.h"
 #include "gl/Program.h"
 #include "gl/ShaderSource.h"
 #include "gl/State.h"
@@ -29,12 +30,14 @@ namespace fs = std::filesystem;
 std::string BakeSettings::key() const
 {
     // The bake shaders, as compiled (includes resolved), are part of the key: editing one makes
-    // a new cache entry rather than reading a stale one. v1: bump when the CPU side of the bake
-    // (the spherical harmonics of EnvironmentMap) or the file layout changes.
+    // a new cache entry rather than reading a stale one. v2: bump when the CPU side of the bake
+    // (the spherical harmonics and irradiance sources of EnvironmentMap) or the file layout
+    // changes (v2: the irradiance cube).
     const uint64_t shaders = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/equirect_to_cube.comp", {}).text +
-                                     gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text);
-    return fmt::format("v1-c{}-p{}x{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples,
-                       uint32_t(shaders ^ (shaders >> 32)));
+                                     gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text +
+                                     gl::loadShaderSource(gl::shaderRoot(), "ibl/irradiance.comp", {}).text);
+    return fmt::format("v2-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
+                       kIrradianceSourceWidth, uint32_t(shaders ^ (shaders >> 32)));
 }
 
 std::optional<BakeSettings> bakePreset(std::string_view name)
@@ -141,6 +144,21 @@ void writeAtomically(const fs::path& file, const std::function<void(std::ofstrea
     if (ec) fs::remove(temp, ec);
 }
 
+void writeBright(std::ofstream& out, const std::vector<IrradianceSource>& bright)
+{
+    const int32_t count = int32_t(bright.size());
+    out.write(reinterpret_cast<const char*>(&count), sizeof count);
+    out.write(reinterpret_cast<const char*>(bright.data()), std::streamsize(bright.size() * sizeof(IrradianceSource)));
+}
+
+bool readBright(std::ifstream& in, std::vector<IrradianceSource>& bright)
+{
+    int32_t count = 0;
+    if (!in.read(reinterpret_cast<char*>(&count), sizeof count) || count < 0 || count > kIrradianceBrightSources) return false;
+    bright.resize(size_t(count));
+    return bool(in.read(reinterpret_cast<char*>(bright.data()), std::streamsize(bright.size() * sizeof(IrradianceSource))));
+}
+
 bool checkMagic(std::ifstream& in)
 {
     char magic[8] = {};
@@ -171,12 +189,13 @@ ResolvedShading dfgVariant(const ResolvedShading& shading)
 }
 
 struct ImageBasedLighting::Impl {
-    gl::Program toCube, prefilter;
-    gl::Texture cube, prefiltered;
+    gl::Program toCube, prefilter, irradianceProgram;
+    gl::Texture cube, prefiltered, irradiance;
     /// DFG tables by dfgKey of their variant, made on first use; the compute program is
     /// compiled only to bake (a table read from the disk cache needs none) and not kept.
     std::map<int, gl::Texture> luts;
     Sh9 sh{};
+    std::vector<IrradianceSource> bright; // summed per pixel beside the irradiance cube
     bool has = false;
     fs::path lutCacheDirectory;
     BakeSettings lutSettings;
@@ -244,6 +263,33 @@ struct ImageBasedLighting::Impl {
         }
         state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
         sh = projectSh9(map);
+        bakeIrradiance(state, map);
+    }
+
+    /// The irradiance cube: the map reduced on the CPU (32-bit float), convolved on the GPU.
+    void bakeIrradiance(gl::State& state, const EnvironmentMap& map)
+    {
+        IrradianceSplit split = splitIrradiance(map);
+        bright = std::move(split.bright);
+        const std::vector<IrradianceSource>& sources = split.cube;
+        std::vector<glm::vec4> packed;
+        packed.reserve(sources.size() * 2);
+        for (const IrradianceSource& s : sources) {
+            packed.emplace_back(s.direction, 0.0f);
+            packed.emplace_back(s.flux, 0.0f);
+        }
+        const gl::Buffer buffer(packed.size() * sizeof(glm::vec4), packed.data(), "irradiance sources");
+        gl::TextureDesc desc;
+        desc.type = gl::TextureType::Cube;
+        desc.format = gl::Format::RGBA16F;
+        desc.width = desc.height = kIrradianceSize;
+        desc.label = "irradiance";
+        irradiance = gl::Texture(desc);
+        state.useProgram(program(irradianceProgram, "ibl/irradiance.comp"));
+        gl::bindStorageBuffer(0, buffer);
+        state.bindImage(0, irradiance, 0, gl::ImageAccess::WriteOnly, /*layered*/ true);
+        state.dispatchCompute(uint32_t(groups(kIrradianceSize)), uint32_t(groups(kIrradianceSize)), 6);
+        state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
     }
 
     /// Returns the milliseconds spent compiling the program (the rest of a bake is the dispatch).
@@ -276,6 +322,8 @@ bool ImageBasedLighting::hasEnvironment() const { return mImpl->has; }
 const Sh9& ImageBasedLighting::sh() const { return mImpl->sh; }
 const gl::Texture& ImageBasedLighting::cube() const { return mImpl->cube; }
 const gl::Texture& ImageBasedLighting::prefiltered() const { return mImpl->prefiltered; }
+const gl::Texture& ImageBasedLighting::irradiance() const { return mImpl->irradiance; }
+const std::vector<IrradianceSource>& ImageBasedLighting::brightSources() const { return mImpl->bright; }
 void ImageBasedLighting::setLutCacheDirectory(const fs::path& directory) { mImpl->lutCacheDirectory = directory; }
 
 BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const EnvironmentMap& map, const BakeSettings& settings, const fs::path& cacheDirectory)
@@ -291,7 +339,8 @@ BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const Environmen
         std::ifstream in(report.cacheFile, std::ios::binary);
         if (in && checkMagic(in) && readTexture(in, r.cube, "environment cube", gl::Format::RGBA16F, 4) &&
             readTexture(in, r.prefiltered, "prefiltered environment", gl::Format::RGBA16F, 4) &&
-            in.read(reinterpret_cast<char*>(r.sh.data()), sizeof(Sh9))) {
+            readTexture(in, r.irradiance, "irradiance", gl::Format::RGBA16F, 4) &&
+            in.read(reinterpret_cast<char*>(r.sh.data()), sizeof(Sh9)) && readBright(in, r.bright)) {
             r.has = true;
             report.fromCache = true;
             report.milliseconds = watch.elapsedMs();
@@ -307,7 +356,9 @@ BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const Environmen
         writeAtomically(report.cacheFile, [&](std::ofstream& out) {
             writeTextures(out, r.cube);
             writeTextures(out, r.prefiltered);
+            writeTextures(out, r.irradiance);
             out.write(reinterpret_cast<const char*>(r.sh.data()), sizeof(Sh9));
+            writeBright(out, r.bright);
         });
     }
     glFinish();

@@ -1,6 +1,7 @@
 #pragma once
 // Image-based lighting resources: the environment as a mipmapped cube map, its prefiltered
-// specular mip chain, its order-2 SH irradiance, and the split-sum DFG table of each BRDF
+// specular mip chain, its irradiance cube (the diffuse term), its order-2 SH irradiance (the
+// BRDF explorer's and the CPU's), and the split-sum DFG table of each BRDF
 // variant in use. Bakes run as compute shaders and are cached on disk, keyed by the
 // environment's content (or the table's shader source) and the bake parameters.
 #include <filesystem>
@@ -40,6 +41,12 @@ public:
     const Sh9& sh() const;
     const gl::Texture& cube() const;
     const gl::Texture& prefiltered() const;
+    /// E(n) in lux, kIrradianceSize² faces (shading/EnvironmentMap: the exact cosine
+    /// convolution of the map, not its SH).
+    const gl::Texture& irradiance() const;
+    /// The environment's brightest parts, taken out of the irradiance cube and summed per pixel
+    /// (EnvironmentData::bright*), at most kIrradianceBrightSources.
+    const std::vector<IrradianceSource>& brightSources() const;
     /// The split-sum DFG table of dfgVariant(shading): baked on first use by
     /// shaders/ibl/dfg.comp compiled with the variant's defines (the forward pass's), and
     /// cached on disk (setLutCacheDirectory) under a name that holds the variant, the table

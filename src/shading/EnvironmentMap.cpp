@@ -143,6 +143,133 @@ Sh9 projectSh9(const EnvironmentMap& map)
     return sh;
 }
 
+glm::vec3 bruteForceIrradiance(const EnvironmentMap& map, const glm::vec3& n)
+{
+    glm::dvec3 e(0.0);
+    const double dPhi = 2.0 * kPi / double(map.width);
+    for (int y = 0; y < map.height; ++y) {
+        const double theta0 = kPi * double(y) / double(map.height), theta1 = kPi * double(y + 1) / double(map.height);
+        const double solidAngle = (std::cos(theta0) - std::cos(theta1)) * dPhi;
+        for (int x = 0; x < map.width; ++x) {
+            const glm::vec3 d = equirectToDirection({(float(x) + 0.5f) / float(map.width), (float(y) + 0.5f) / float(map.height)});
+            const double cosine = glm::dot(n, d);
+            if (cosine > 0.0) e += glm::dvec3(map.at(x, y)) * (cosine * solidAngle);
+        }
+    }
+    return glm::vec3(e);
+}
+
+glm::vec3 cubeDirection(int face, const glm::vec2& st)
+{
+    const glm::vec2 uv = st * 2.0f - 1.0f;
+    glm::vec3 d;
+    switch (face) {
+    case 0: d = {1.0f, -uv.y, -uv.x}; break;
+    case 1: d = {-1.0f, -uv.y, uv.x}; break;
+    case 2: d = {uv.x, 1.0f, uv.y}; break;
+    case 3: d = {uv.x, -1.0f, -uv.y}; break;
+    case 4: d = {uv.x, -uv.y, 1.0f}; break;
+    default: d = {-uv.x, -uv.y, -1.0f}; break;
+    }
+    return glm::normalize(d);
+}
+
+std::vector<IrradianceSource> irradianceSources(const EnvironmentMap& map, int sourceWidth)
+{
+    const int step = std::max(1, map.width / std::max(sourceWidth, 1));
+    const int width = (map.width + step - 1) / step, height = (map.height + step - 1) / step;
+    std::vector<IrradianceSource> sources;
+    sources.reserve(size_t(width) * size_t(height));
+    const double dPhi = 2.0 * kPi / double(map.width);
+    for (int by = 0; by < height; ++by)
+        for (int bx = 0; bx < width; ++bx) {
+            glm::dvec3 flux(0.0), centroid(0.0), plain(0.0);
+            for (int y = by * step; y < (by + 1) * step && y < map.height; ++y) {
+                const double theta0 = kPi * double(y) / double(map.height), theta1 = kPi * double(y + 1) / double(map.height);
+                const double solidAngle = (std::cos(theta0) - std::cos(theta1)) * dPhi;
+                for (int x = bx * step; x < (bx + 1) * step && x < map.width; ++x) {
+                    const glm::dvec3 d(
+                        equirectToDirection({(float(x) + 0.5f) / float(map.width), (float(y) + 0.5f) / float(map.height)}));
+                    const glm::dvec3 l = glm::dvec3(map.at(x, y)) * solidAngle;
+                    flux += l;
+                    centroid += d * (l.x + l.y + l.z);
+                    plain += d * solidAngle;
+                }
+            }
+            const glm::dvec3 c = glm::length(centroid) > 0.0 ? centroid : plain;
+            sources.push_back({glm::vec3(glm::normalize(c)), glm::vec3(flux)});
+        }
+    return sources;
+}
+
+glm::vec3 irradianceAt(const std::vector<IrradianceSource>& sources, const glm::vec3& n)
+{
+    glm::vec3 e(0.0f);
+    for (const IrradianceSource& src : sources) e += src.flux * std::max(glm::dot(n, src.direction), 0.0f);
+    return e;
+}
+
+IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount, int brightWidth, int cubeWidth)
+{
+    const std::vector<IrradianceSource> fine = irradianceSources(map, brightWidth);
+    const int step = std::max(1, map.width / std::max(brightWidth, 1));
+    const int width = (map.width + step - 1) / step, height = (map.height + step - 1) / step;
+    // The brightest fine sources, by index.
+    std::vector<size_t> order(fine.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    const auto luminance = [&](size_t i) { return glm::dot(fine[i].flux, glm::vec3(0.2126f, 0.7152f, 0.0722f)); };
+    const size_t n = std::min(order.size(), size_t(std::max(brightCount, 0)));
+    std::partial_sort(order.begin(), order.begin() + ptrdiff_t(n), order.end(),
+                      [&](size_t a, size_t b) { return luminance(a) > luminance(b) || (luminance(a) == luminance(b) && a < b); });
+    IrradianceSplit split;
+    std::vector<bool> taken(fine.size(), false);
+    for (size_t k = 0; k < n; ++k) {
+        split.bright.push_back(fine[order[k]]);
+        taken[order[k]] = true;
+    }
+    // The rest merged into coarser blocks: flux summed, directions by flux-weighted centroid.
+    const int merge = std::max(1, width / std::max(cubeWidth, 1));
+    for (int by = 0; by < height; by += merge)
+        for (int bx = 0; bx < width; bx += merge) {
+            glm::dvec3 flux(0.0), centroid(0.0), plain(0.0);
+            for (int y = by; y < by + merge && y < height; ++y)
+                for (int x = bx; x < bx + merge && x < width; ++x) {
+                    const size_t i = size_t(y) * size_t(width) + size_t(x);
+                    plain += glm::dvec3(fine[i].direction);
+                    if (taken[i]) continue;
+                    const glm::dvec3 f(fine[i].flux);
+                    flux += f;
+                    centroid += glm::dvec3(fine[i].direction) * (f.x + f.y + f.z);
+                }
+            const glm::dvec3 c = glm::length(centroid) > 0.0 ? centroid : plain;
+            split.cube.push_back({glm::vec3(glm::normalize(c)), glm::vec3(flux)});
+        }
+    return split;
+}
+
+std::vector<IrradianceSource> takeBrightest(std::vector<IrradianceSource>& sources, int count)
+{
+    const auto luminance = [](const IrradianceSource& s) { return glm::dot(s.flux, glm::vec3(0.2126f, 0.7152f, 0.0722f)); };
+    const size_t n = std::min(sources.size(), size_t(std::max(count, 0)));
+    std::partial_sort(sources.begin(), sources.begin() + ptrdiff_t(n), sources.end(),
+                      [&](const IrradianceSource& a, const IrradianceSource& b) { return luminance(a) > luminance(b); });
+    std::vector<IrradianceSource> bright(sources.begin(), sources.begin() + ptrdiff_t(n));
+    sources.erase(sources.begin(), sources.begin() + ptrdiff_t(n));
+    return bright;
+}
+
+std::vector<glm::vec3> irradianceCube(const std::vector<IrradianceSource>& sources, int size)
+{
+    std::vector<glm::vec3> out(size_t(6) * size_t(size) * size_t(size));
+    for (int face = 0; face < 6; ++face)
+        for (int t = 0; t < size; ++t)
+            for (int s = 0; s < size; ++s) {
+                const glm::vec3 n = cubeDirection(face, {(float(s) + 0.5f) / float(size), (float(t) + 0.5f) / float(size)});
+                out[(size_t(face) * size_t(size) + size_t(t)) * size_t(size) + size_t(s)] = irradianceAt(sources, n);
+            }
+    return out;
+}
+
 glm::vec3 shIrradiance(const Sh9& sh, const glm::vec3& n)
 {
     const auto basis = shBasis(n);

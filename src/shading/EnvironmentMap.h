@@ -27,6 +27,12 @@ struct EnvironmentMap {
     glm::vec3 sample(const glm::vec3& d) const;
 };
 
+/// The irradiance cube's face size and its bake's source resolution (docs/ibl.md: measured).
+constexpr int kIrradianceSize = 32;
+constexpr int kIrradianceSourceWidth = 256;
+constexpr int kIrradianceCubeSourceWidth = 64;
+constexpr int kIrradianceBrightSources = 32; // = SPECULA_IBL_BRIGHT_SOURCES
+
 struct SkyParams {
     glm::vec3 sunDirection = glm::normalize(glm::vec3(0.4f, 0.55f, -0.7f)); ///< towards the sun
     float sunIlluminance = 6.0f;                      ///< lux on a surface facing the sun
@@ -50,6 +56,47 @@ EnvironmentMap proceduralSky(const SkyParams& params = {}, int width = 512);
 /// solid angle of each equirectangular texel, (cos θ0 − cos θ1) Δφ.
 using Sh9 = std::array<glm::vec3, 9>;
 Sh9 projectSh9(const EnvironmentMap& map);
+/// Irradiance E(n) = ∫ L(ω) max(0, n·ω) dω (lux) by brute force over every texel of `map`
+/// with its exact solid angle: the reference the irradiance cube is tested against.
+glm::vec3 bruteForceIrradiance(const EnvironmentMap& map, const glm::vec3& n);
+
+/// Direction of texel centre st ∈ [0, 1]² of cube face 0..5 (+X, −X, +Y, −Y, +Z, −Z, t down
+/// the face: OpenGL's convention, as shaders/ibl/cube.glsl).
+glm::vec3 cubeDirection(int face, const glm::vec2& st);
+
+/// The map reduced for the irradiance bake: blocks of texels, each the sum of its texels'
+/// radiance × solid angle (flux per unit area, lux at normal incidence), seen from the
+/// radiance-weighted centroid of their directions (so a sun keeps its direction). At most
+/// `sourceWidth` × sourceWidth/2 of them.
+struct IrradianceSource {
+    glm::vec3 direction;
+    glm::vec3 flux;
+};
+std::vector<IrradianceSource> irradianceSources(const EnvironmentMap& map, int sourceWidth = kIrradianceSourceWidth);
+
+/// E(n) = Σ flux · max(0, n·direction) over `sources`.
+glm::vec3 irradianceAt(const std::vector<IrradianceSource>& sources, const glm::vec3& n);
+
+/// The diffuse term's two parts: the `brightCount` sources of most flux (luminance) of the map
+/// reduced to `brightWidth` × brightWidth/2, which shading sums per pixel, and the rest reduced
+/// further, to `cubeWidth` × cubeWidth/2, which the irradiance cube is baked from.
+struct IrradianceSplit {
+    std::vector<IrradianceSource> bright;
+    std::vector<IrradianceSource> cube;
+};
+IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount = kIrradianceBrightSources,
+                                int brightWidth = kIrradianceSourceWidth, int cubeWidth = kIrradianceCubeSourceWidth);
+
+/// Takes the `count` sources of most flux (luminance) out of `sources`, brightest first: shading
+/// sums them per pixel (exactly: no interpolation across their terminators, where a cube's
+/// texels would round the kink of max(0, n·d)), the cube holds the rest.
+std::vector<IrradianceSource> takeBrightest(std::vector<IrradianceSource>& sources, int count);
+
+/// The irradiance cube (shaders/ibl/irradiance.comp bakes it on the GPU; this is its CPU
+/// twin): irradianceAt the centre of each texel of six `size`² faces. Face after face, rows
+/// in t order, RGB.
+std::vector<glm::vec3> irradianceCube(const std::vector<IrradianceSource>& sources, int size);
+
 /// Irradiance E(n) (lux) from the SH radiance, convolved with the clamped cosine
 /// (Ramamoorthi & Hanrahan 2001, eq. 8: Â0 = π, Â1 = 2π/3, Â2 = π/4).
 glm::vec3 shIrradiance(const Sh9& sh, const glm::vec3& n);

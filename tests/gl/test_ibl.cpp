@@ -15,6 +15,9 @@
 
 #include "shading/Brdf.h"
 #include "shading/EnvironmentMap.h"
+#include "gl/State.h"
+#include "gl/Texture.h"
+#include "render/ImageBasedLighting.h"
 #include "render/Renderer.h"
 #include "scene/Procedural.h"
 #include "shaders/shared/EnvironmentData.h"
@@ -500,7 +503,8 @@ TEST_F(GlTest, EnvironmentBlockUploadsOnlyWhatChanged)
 {
     // The environment's uniform block (SH, rotation, inverse view-projection, parameters) is
     // written field by field, and only where a field changed: a still frame uploads nothing,
-    // a moved camera one matrix, a new environment its SH. The image follows each change.
+    // a moved camera one matrix, a new environment its SH and bright sources. The image follows
+    // each change.
     scene::Scene s;
     scene::Material m;
     m.metallicFactor = 0.0f;
@@ -532,6 +536,43 @@ TEST_F(GlTest, EnvironmentBlockUploadsOnlyWhatChanged)
     EXPECT_EQ(frame(far), sizeof(glm::vec4)); // params
     EXPECT_NEAR(centre(), 2.0f * first, 0.01f * first);
     renderer.setEnvironment(render::constantEnvironment(glm::vec3(0.25f)));
-    EXPECT_EQ(frame(far), sizeof(EnvironmentData::sh)); // the SH only
+    // The SH and the brightest parts' flux (a constant sky's brightest are its first texels,
+    // the same directions).
+    EXPECT_EQ(frame(far), sizeof(EnvironmentData::sh) + sizeof(EnvironmentData::brightFlux));
     EXPECT_NEAR(centre(), first, 0.01f * first);
+}
+
+// The irradiance bake on the GPU (ibl/irradiance.comp) against its CPU twin
+// (shading/EnvironmentMap: irradianceCube of the same sources), every texel, under a map with
+// a sun far beyond half-float range (park, peak 222,000 cd/m²: the sources stay 32-bit) and one
+// without. Tolerance: half-float rounding and float summation order, 0.3 % of the texel plus
+// 1e-4 of the map's mean irradiance. (The CPU twin's own accuracy against brute-force
+// integration: Environment.IrradianceMatchesBruteForceOnEveryHdr.) Fails when the bake reads
+// the wrong face convention or drops sources.
+TEST_F(GlTest, IrradianceBakeMatchesItsCpuTwin)
+{
+    for (const char* name : {"park_1k.hdr", "venice_1k.hdr"}) {
+        SCOPED_TRACE(name);
+        const render::EnvironmentMap map = render::loadEnvironmentMap(std::string(SPECULA_ASSETS_DIR) + "/env/" + name);
+        gl::State state;
+        render::ImageBasedLighting ibl;
+        ibl.setEnvironment(state, map, render::BakeSettings{});
+        const render::IrradianceSplit split = render::splitIrradiance(map);
+        const std::vector<glm::vec3> expected = render::irradianceCube(split.cube, render::kIrradianceSize);
+        const std::vector<float> gpu = ibl.irradiance().readFloat(0, 4);
+        ASSERT_EQ(gpu.size(), expected.size() * 4);
+        double mean = 0.0;
+        for (const glm::vec3& e : expected) mean += (e.x + e.y + e.z) / 3.0;
+        mean /= double(expected.size());
+        int wrong = 0;
+        std::string first;
+        for (size_t i = 0; i < expected.size(); ++i)
+            for (int c = 0; c < 3; ++c) {
+                const double want = expected[i][c], got = gpu[i * 4 + size_t(c)];
+                if (std::abs(got - want) > 0.003 * std::abs(want) + 1e-4 * mean && ++wrong == 1)
+                    first = "texel " + std::to_string(i) + ": " + std::to_string(got) + " vs " + std::to_string(want);
+            }
+        EXPECT_EQ(wrong, 0) << first;
+        EXPECT_EQ(ibl.brightSources().size(), size_t(render::kIrradianceBrightSources));
+    }
 }

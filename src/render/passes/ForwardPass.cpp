@@ -51,7 +51,7 @@ void setEnvironmentField(gl::UniformBuffer<shared::EnvironmentData>& environment
 }
 
 /// Uploads what changed of the environment block: the view every frame the camera moves, the
-/// rotation and parameters when the settings change, the SH when the environment does.
+/// rotation and parameters when the settings change, the SH and the bright sources when the environment does.
 void updateEnvironment(const FrameContext& frame)
 {
     const ImageBasedLighting& ibl = frame.stores.ibl;
@@ -62,6 +62,13 @@ void updateEnvironment(const FrameContext& frame)
     glm::vec4 sh[9];
     for (size_t i = 0; i < 9; ++i) sh[i] = glm::vec4(ibl.sh()[i], 0.0f);
     setEnvironmentField(environment, &EnvironmentData::sh, sh);
+    glm::vec4 brightDirection[SPECULA_IBL_BRIGHT_SOURCES] = {}, brightFlux[SPECULA_IBL_BRIGHT_SOURCES] = {};
+    for (size_t i = 0; i < ibl.brightSources().size() && i < SPECULA_IBL_BRIGHT_SOURCES; ++i) {
+        brightDirection[i] = glm::vec4(ibl.brightSources()[i].direction, 0.0f);
+        brightFlux[i] = glm::vec4(ibl.brightSources()[i].flux, 0.0f);
+    }
+    setEnvironmentField(environment, &EnvironmentData::brightDirection, brightDirection);
+    setEnvironmentField(environment, &EnvironmentData::brightFlux, brightFlux);
     setEnvironmentField(environment, &EnvironmentData::worldToEnvironment,
                         glm::mat4(environmentRotation(-settings.environment.rotationDegrees)));
     setEnvironmentField(environment, &EnvironmentData::inverseViewProjection,
@@ -184,6 +191,8 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
             if (stores.ibl.hasEnvironment()) {
                 state.bindTexture(SPECULA_UNIT_PREFILTERED, stores.ibl.prefiltered());
                 state.bindSampler(SPECULA_UNIT_PREFILTERED, nullptr);
+                state.bindTexture(SPECULA_UNIT_IRRADIANCE, stores.ibl.irradiance());
+                state.bindSampler(SPECULA_UNIT_IRRADIANCE, nullptr);
                 stores.environment.bind(SPECULA_BINDING_ENVIRONMENT);
             }
             stores.lights.bind(state);
