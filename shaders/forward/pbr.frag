@@ -92,6 +92,9 @@ void main()
     metallic *= mr.b;
 #endif
     metallic = saturate(metallic);
+    // Image-based light has no spike to fear: roughness 0 is a true mirror there (the
+    // prefiltered level 0 is the map at its own resolution); only punctual lights need the floor.
+    float iblRoughness = saturate(perceptualRoughness);
     perceptualRoughness = clamp(perceptualRoughness, kMinPerceptualRoughness, 1.0);
 
     vec3 n = normalize(vNormal);
@@ -188,7 +191,7 @@ void main()
     // What the specular lobe reflects, the diffuse lobe below it cannot: 1 - E keeps a white
     // dielectric in a white furnace at or below the environment's radiance.
     vec3 diffuseIbl = irradianceCube(toEnvironment(n)) * surface.diffuseColor * INV_PI * (1.0 - specularAlbedo);
-    vec3 specularIbl = prefilteredRadiance(specularDominantDirection(n, r, perceptualRoughness), perceptualRoughness) * specularAlbedo;
+    vec3 specularIbl = prefilteredRadiance(specularDominantDirection(n, r, iblRoughness), iblRoughness) * specularAlbedo;
     float specularAo = specularOcclusion(NoV, occlusion, perceptualRoughness);
 #if defined(HAS_NORMAL_TEXTURE)
     specularAo *= horizonFade(r, flip ? -normalize(vNormal) : normalize(vNormal));

@@ -12,14 +12,23 @@ namespace specula::render {
 /// The sizes and sample counts of an environment's bake (Renderer::setEnvironment).
 struct BakeSettings {
     std::string name = "default";
-    int cubeSize = 256;       ///< base cube map face size
-    int prefilterSize = 128;  ///< prefiltered level 0 face size
-    int prefilterLevels = 6;  ///< roughness = level / (levels - 1)
+    /// Base cube map face size; 0: half the map's width (a 1k equirect → 512² faces, 2k →
+    /// 1024²), a power of two in 64–1024. A quarter (the map's own texel density at a face's
+    /// centre) blurs a mirror by resampling twice: 3.7–4.4 % mean error against the map, 1.6–1.9 %
+    /// at half (GlTest.MirrorReflectsTheMapAtItsOwnResolution).
+    int cubeSize = 0;
+    /// Prefiltered level 0 face size (level 0 is the mirror: roughness 0); 0: the cube's, so
+    /// that a mirror reflects the map at its own resolution.
+    int prefilterSize = 0;
+    /// Roughness = level / (levels − 1); 0: down to 4² faces.
+    int prefilterLevels = 0;
     int prefilterSamples = 256;
     int lutSize = 128;        ///< DFG table size (n.v × perceptual roughness)
     int lutSamples = 512;     ///< DFG samples per texel
-    /// Cache file name part for these parameters.
+    /// Cache file name part for these parameters (resolved ones: resolvedFor).
     std::string key() const;
+    /// These settings with the sizes left at 0 chosen for a map `mapWidth` texels wide.
+    BakeSettings resolvedFor(int mapWidth) const;
 };
 
 /// "default", or "reference": the LearnOpenGL tutorial's parameters (512² cube, 128² prefilter

@@ -40,6 +40,21 @@ std::string BakeSettings::key() const
                        kIrradianceSourceWidth, uint32_t(shaders ^ (shaders >> 32)));
 }
 
+BakeSettings BakeSettings::resolvedFor(int mapWidth) const
+{
+    BakeSettings s = *this;
+    if (s.cubeSize <= 0) {
+        s.cubeSize = 64;
+        while (s.cubeSize < 1024 && s.cubeSize * 2 < mapWidth) s.cubeSize *= 2;
+    }
+    if (s.prefilterSize <= 0) s.prefilterSize = s.cubeSize;
+    if (s.prefilterLevels <= 0) {
+        s.prefilterLevels = 1;
+        for (int size = s.prefilterSize; size > 4; size /= 2) ++s.prefilterLevels;
+    }
+    return s;
+}
+
 std::optional<BakeSettings> bakePreset(std::string_view name)
 {
     if (name == "default") return BakeSettings{};
@@ -326,8 +341,10 @@ const gl::Texture& ImageBasedLighting::irradiance() const { return mImpl->irradi
 const std::vector<IrradianceSource>& ImageBasedLighting::brightSources() const { return mImpl->bright; }
 void ImageBasedLighting::setLutCacheDirectory(const fs::path& directory) { mImpl->lutCacheDirectory = directory; }
 
-BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const EnvironmentMap& map, const BakeSettings& settings, const fs::path& cacheDirectory)
+BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const EnvironmentMap& map, const BakeSettings& requested,
+                                              const fs::path& cacheDirectory)
 {
+    const BakeSettings settings = requested.resolvedFor(map.width);
     Impl& r = *mImpl;
     Stopwatch watch;
     BakeReport report;
