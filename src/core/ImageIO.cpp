@@ -320,7 +320,8 @@ bool isExr(const std::vector<char>& data)
 /// Walks the header(s) of an OpenEXR file before OpenEXR reads it: OpenEXR allocates each
 /// attribute's declared size, and the tables of chunk offsets from the data window, before it
 /// checks either against the file, so a forged size of 2 GiB in a 100-byte file is an
-/// out-of-memory kill (found by fuzz/fuzz_exr). Returns the problem found, or nothing; the
+/// out-of-memory kill (found by an earlier fuzzing attempt on issue 16; the reproducer is
+/// tests/unit/test_image_io.cpp, ExrAttributeSizeBeyondTheFileIsAnError). Returns the problem found, or nothing; the
 /// rest (a bad type, bad compression) is left to OpenEXR, which reports it.
 std::optional<std::string> checkExrHeader(const std::vector<char>& data)
 {

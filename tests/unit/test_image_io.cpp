@@ -338,7 +338,7 @@ TEST(ImageIo, ReadsModelTextures)
     }
 }
 
-// -- hostile headers (issue 16: fuzz/fuzz_exr, fuzz/fuzz_hdr) ----------------------------------
+// -- hostile headers (issue 16) -----------------------------------------------------------------
 
 namespace {
 
@@ -356,7 +356,8 @@ size_t exrAttributeSize(const std::string& bytes, const std::string& name)
 TEST(ImageIo, ExrAttributeSizeBeyondTheFileIsAnError)
 {
     // OpenEXR allocates an attribute's declared size before reading it: 2 GiB from a file of
-    // a few hundred bytes was an out-of-memory kill (found by fuzz_exr). Checked first now.
+    // a few hundred bytes was an out-of-memory kill (found by an earlier fuzzing attempt on
+    // issue 16). Checked first now.
     TempDir dir;
     writeExr(dir / "a.exr", testPatternFloat(4, 3));
     std::string bytes = readFile(dir / "a.exr");
