@@ -9,7 +9,14 @@ ifeq ($(CI),true)
 CMAKE_FLAGS += -DSPECULA_WERROR=ON
 endif
 
-.PHONY: all bootstrap configure build demo test bench install deb clean
+# The sanitizer build (docs/testing.md#sanitizers): clang with AddressSanitizer, LeakSanitizer and
+# UndefinedBehaviorSanitizer, and the libFuzzer fuzzers, in its own directory.
+SANITIZE_BUILD ?= build-sanitize
+SANITIZE_CMAKE_FLAGS ?= -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+                        -DSPECULA_SANITIZE=ON -DSPECULA_FUZZERS=ON
+FUZZ_SECONDS ?= 15
+
+.PHONY: all bootstrap configure build demo test bench install deb clean build-sanitize test-sanitize fuzz-short soak
 
 all: build
 
@@ -31,6 +38,24 @@ demo: build
 
 test: build
 	@bash scripts/test.sh $(BUILD)
+
+$(SANITIZE_BUILD)/build.ninja: CMakeLists.txt | bootstrap
+	@cmake -S . -B $(SANITIZE_BUILD) $(SANITIZE_CMAKE_FLAGS) >/dev/null
+
+build-sanitize: bootstrap $(SANITIZE_BUILD)/build.ninja
+	@cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+
+# The whole suite under the sanitizers (scripts/test-sanitize.sh).
+test-sanitize: build-sanitize
+	@bash scripts/test-sanitize.sh $(SANITIZE_BUILD)
+
+# Each fuzzer for FUZZ_SECONDS (scripts/fuzz.sh): they still build and still find nothing.
+fuzz-short: build-sanitize
+	@bash scripts/fuzz.sh $(SANITIZE_BUILD) $(FUZZ_SECONDS)
+
+# 100,000 frames, memory and GL objects recorded (scripts/soak.sh; docs/testing.md#soak).
+soak: build
+	@bash scripts/soak.sh $(BUILD)
 
 bench: build
 	@mkdir -p out

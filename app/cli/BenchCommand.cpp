@@ -79,7 +79,7 @@ int runBench(const BenchArgs& args)
             Stopwatch startup;
             s.context = platform::Context::createHeadless({.debug = false});
             s.contextMs = startup.elapsedMs();
-            s.document = setup::loadSceneOrBuiltin(name);
+            s.document = setup::loadSceneOrBuiltin(name, args.frame.load);
             s.settings = setup::resolveSettings(s.document, args.frame);
             const auto environment = setup::loadEnvironment(s.document, args.frame);
             s.environment = environment.has_value();

@@ -21,7 +21,7 @@ int runRender(const RenderArgs& args)
     checkOutputPath(output); // before any long work
 
     Stopwatch load;
-    scene::SceneDocument document = setup::loadSceneOrBuiltin(args.scene);
+    scene::SceneDocument document = setup::loadSceneOrBuiltin(args.scene, args.frame.load);
     const render::FrameSettings settings = setup::resolveSettings(document, args.frame);
     const std::optional<render::EnvironmentMap> environment = setup::loadEnvironment(document, args.frame);
     const render::BakeSettings bake = setup::resolveBakeSettings(args.frame);

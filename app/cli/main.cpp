@@ -4,101 +4,17 @@
 #include <cstdio>
 #include <exception>
 
-#include "Commands.h"
-#include "PostOptions.h"
-#include "app/viewer/ViewCommand.h"
+#include "CommandLine.h"
 #include "core/Error.h"
 #include "core/Log.h"
-#include "specula/Version.h"
 
 using namespace specula;
-
-namespace {
-
-void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
-{
-    command->add_option("--width", frame.width, "image width in pixels (default 1280)");
-    command->add_option("--height", frame.height, "image height in pixels (default 720)");
-    command->add_option("--msaa", frame.msaa, "samples per pixel: 1 (pixel centre, no anti-aliasing), 2, 4 (default), 8");
-    command->add_option("--exposure", frame.exposure, "exposure in EV: the image is multiplied by 2^EV (default 0)");
-    command->add_option("--tonemap", frame.tonemap, "none, reinhard, reinhard-ext, aces, neutral (default), agx");
-    command->add_option("--brdf-g", frame.brdfG, "masking-shadowing G: smith-ggx (glTF, default), smith-ggx-correlated, schlick-ggx (UE4), neumann, kelemen, cook-torrance, implicit");
-    command->add_option("--brdf-d", frame.brdfD, "normal distribution D: ggx (default), beckmann, blinn-phong");
-    command->add_option("--brdf-f", frame.brdfF, "Fresnel F: schlick (default), schlick-sg (UE4), none");
-    command->add_option("--brdf-diffuse", frame.brdfDiffuse, "diffuse lobe: lambert (default), oren-nayar, burley");
-    command->add_option("--shading", frame.shading, "every material's shading model: pbr, unlit, flat, gouraud, phong, blinn-phong, doom");
-    command->add_option("--debug-view", frame.debugView,
-                        "show one buffer: base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, brdf-f, ssao, bloom, cascades, shadow-atlas");
-    command->add_option("--camera", frame.camera, "index of the scene camera to use (default: the first, else framed)");
-    command->add_flag("--no-default-lights", frame.noDefaultLights, "never add the default light rig");
-    command->add_option("--env", frame.env, "environment: an equirectangular .hdr or .exr, sky (procedural, the default) or none");
-    command->add_option("--env-color", frame.envColor, "a constant environment of radiance R,G,B (cd/m²)");
-    command->add_option("--env-intensity", frame.envIntensity, "scales the environment (default 1)");
-    command->add_option("--env-rotation", frame.envRotation, "turns the environment about +Y, degrees");
-    command->add_option("--skybox", frame.skybox, "on (default), off, or blur=R (R = roughness 0..1)");
-    command->add_option("--bake-preset", frame.bakePreset, "default, or reference (the LearnOpenGL tutorial's bake sizes)");
-    command->add_option("--energy-compensation", frame.energyCompensation,
-                        "multiple-scattering compensation of the specular lobe: on (default) or off (exactly the glTF BRDF)");
-    command->add_flag("--no-cache", frame.noCache, "bake the environment even if the bake cache holds it, and do not cache");
-    command->add_flag("--gizmos", frame.gizmos, "draw every light as a disc in the light's colour");
-    cli::addPostOptions(command, frame);
-}
-
-} // namespace
 
 int main(int argc, char** argv)
 {
     log::init();
-    CLI::App app{"Specula: a physically based renderer (OpenGL 4.5)", "specula"};
-    app.set_version_flag("--version", std::string("specula ") + versionString());
-    app.require_subcommand(1);
-    // One line per failure: the first line of CLI11's message plus a pointer to --help.
-    app.failure_message([](const CLI::App*, const CLI::Error& e) {
-        return std::string("specula: error: ") + e.what() + " (see --help)\n";
-    });
-
-    cli::RenderArgs render;
-    CLI::App* renderCommand = app.add_subcommand("render", "render a scene to an image (PNG, Radiance HDR or OpenEXR)");
-    renderCommand->add_option("scene", render.scene, "a .gltf, .glb or .json scene, or a built-in: demo (default), learnopengl, learnopengl-ibl");
-    renderCommand->add_option("-o,--output", render.output, "output image: .png (tone-mapped sRGB), .hdr or .exr (linear radiance x 2^EV)");
-    addFrameOptions(renderCommand, render.frame);
-    renderCommand->add_option("--print-graph", render.printGraph,
-                              "write the frame's graph of passes and resources as Graphviz dot to FILE (- = standard output)");
-    renderCommand->add_flag("--stats", render.stats,
-                            "print the GPU time of each pass (median of 9 more frames, timer queries) to stdout");
-
-    CLI::App* infoCommand = app.add_subcommand("info", "print the OpenGL vendor, renderer, version and limits");
-
-    cli::BenchArgs bench;
-    CLI::App* benchCommand = app.add_subcommand("bench", "measure start-up and frame times of built-in scenes");
-    benchCommand->add_option("--scene", bench.scenes, "scenes to measure (default: demo learnopengl learnopengl-ibl)");
-    benchCommand->add_option("-o,--output", bench.output, "JSON results file (default bench.json)");
-    benchCommand->add_option("--frames", bench.frames, "frames to time per scene (default 60)");
-    benchCommand->add_option("--warmup", bench.warmup, "untimed frames first (default 5)");
-    addFrameOptions(benchCommand, bench.frame);
-
-    cli::BakeArgs bake;
-    CLI::App* bakeCommand = app.add_subcommand("bake", "bake an environment for image-based lighting into the cache");
-    bakeCommand->add_option("env", bake.env, "an equirectangular .hdr or .exr, or sky")->required();
-    bakeCommand->add_option("--bake-preset", bake.preset, "default, or reference (the LearnOpenGL tutorial's bake sizes)");
-    bakeCommand->add_option("--cache-dir", bake.cacheDirectory, "where to write (default: $SPECULA_CACHE_DIR, $XDG_CACHE_HOME/specula or ~/.cache/specula)");
-
-    viewer::ViewArgs view;
-    CLI::App* viewCommand = app.add_subcommand("view", "open a window on a scene, with panels (docs/viewer.md)");
-    viewCommand->add_option("scene", view.scene, "a .gltf, .glb or .json scene, or a built-in: demo (default), learnopengl, learnopengl-ibl");
-    viewCommand->add_option("--frames", view.frames, "render N frames (after --script), then exit");
-    viewCommand->add_option("--screenshot", view.screenshot, "with --frames: write the last frame as PNG");
-    viewCommand->add_option("--script", view.script, "replay UI actions from FILE (docs/viewer.md)");
-    viewCommand->add_flag("--hide-ui", view.hideUi, "start with the panels hidden (H shows them)");
-    addFrameOptions(viewCommand, view.frame);
-
-    cli::GalleryArgs gallery;
-    CLI::App* galleryCommand = app.add_subcommand("gallery", "render a scene once per shading model into a labelled contact sheet");
-    galleryCommand->add_option("scene", gallery.scene, "a .gltf, .glb or .json scene, or a built-in (default: demo)");
-    galleryCommand->add_option("-o,--output", gallery.output, "the contact sheet, PNG (default gallery.png)");
-    galleryCommand->add_flag("--variants", gallery.variants, "also one tile per D, G, F and diffuse choice (physically based)");
-    galleryCommand->add_option("--columns", gallery.columns, "tiles per row (default 3)");
-    addFrameOptions(galleryCommand, gallery.frame);
+    cli::CommandLine line;
+    CLI::App& app = line.app;
 
     try {
         app.parse(argc, argv);
@@ -107,12 +23,12 @@ int main(int argc, char** argv)
     }
 
     try {
-        if (*renderCommand) return cli::runRender(render);
-        if (*galleryCommand) return cli::runGallery(gallery);
-        if (*infoCommand) return cli::runInfo();
-        if (*benchCommand) return cli::runBench(bench);
-        if (*bakeCommand) return cli::runBake(bake);
-        if (*viewCommand) return viewer::runView(view);
+        if (*line.renderCommand) return cli::runRender(line.render);
+        if (*line.galleryCommand) return cli::runGallery(line.gallery);
+        if (*line.infoCommand) return cli::runInfo();
+        if (*line.benchCommand) return cli::runBench(line.bench);
+        if (*line.bakeCommand) return cli::runBake(line.bake);
+        if (*line.viewCommand) return viewer::runView(line.view);
     } catch (const Error& e) {
         std::fprintf(stderr, "specula: error: %s\n", e.what());
         return 1;

@@ -49,7 +49,7 @@ void Viewer::loadScene(const std::string& name)
 {
     Stopwatch load;
     const bool first = mSceneName.empty();
-    scene::SceneDocument document = setup::loadSceneOrBuiltin(name);
+    scene::SceneDocument document = setup::loadSceneOrBuiltin(name, mOptions.load);
     render::FrameSettings settings = setup::resolveSettings(document, mOptions);
     // The first scene brings its environment (or the command line's); a dropped scene keeps
     // the one on screen.

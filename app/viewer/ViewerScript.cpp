@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 
 #include <fstream>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <sstream>
@@ -45,7 +46,8 @@ public:
         } catch (const std::exception&) {
             used = 0;
         }
-        if (used != word.size()) throw Error("'{}': '{}' is not a number", action(), word);
+        // stof reads "nan" and "inf"; neither is a position, a size or an angle.
+        if (used != word.size() || !std::isfinite(value)) throw Error("'{}': '{}' is not a finite number", action(), word);
         return value;
     }
     int integer(size_t i) const { return int(number(i)); }

@@ -98,30 +98,32 @@ void checkWritable(const fs::path& path, const Image& image)
 }
 
 /// A new file next to the destination. commit() renames it over the destination; until then the
-/// destination is untouched, and a file never committed is removed.
+/// destination is untouched, and a file never committed is removed. Where the file system allows
+/// it (O_TMPFILE: ext4, xfs, btrfs, tmpfs) the file has no name until commit(), so even a writer
+/// killed by SIGKILL or a power cut leaves nothing behind (tests/cli/test_cli_limits.cpp kills
+/// one mid-write); elsewhere a hidden, uniquely named file stands in, which a killed writer
+/// leaves.
 class AtomicFile {
 public:
     explicit AtomicFile(fs::path destination) : mDestination(std::move(destination))
     {
-        const fs::path directory = mDestination.parent_path();
-        // Hidden and uniquely named so that concurrent writers of the same file never collide.
-        std::random_device random;
-        for (int attempt = 0; attempt < 16; ++attempt) {
-            const uint64_t tag = (uint64_t(random()) << 32) ^ random();
-            mTemp = directory / fmt::format(".{}.{:016x}.tmp", mDestination.filename().string(), tag);
-            // 0666 and the umask give the permissions any new file would have.
-            mFd = ::open(mTemp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-            if (mFd >= 0) return;
-            if (errno != EEXIST) break;
+        const fs::path directory = mDestination.parent_path().empty() ? fs::path(".") : mDestination.parent_path();
+        // 0666 and the umask give the permissions any new file would have.
+        mFd = ::open(directory.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+        if (mFd >= 0) {
+            mAnonymous = true;
+            return;
         }
-        writeFailed(mDestination, errnoText(errno));
+        if (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) writeFailed(mDestination, errnoText(errno));
+        createNamed();
+        if (mFd < 0) writeFailed(mDestination, errnoText(errno));
     }
     AtomicFile(const AtomicFile&) = delete;
     AtomicFile& operator=(const AtomicFile&) = delete;
     ~AtomicFile()
     {
         if (mFd >= 0) ::close(mFd);
-        if (!mCommitted) ::unlink(mTemp.c_str());
+        if (!mCommitted && !mTemp.empty()) ::unlink(mTemp.c_str());
     }
 
     /// Records the first error instead of throwing: stb calls this through C code, which
@@ -155,6 +157,19 @@ public:
         if (library) writeFailed(mDestination, library);
         // No fsync: this guards against a failed or killed writer, not against power loss, and a
         // flush per image would slow down rendering sequences.
+        if (mAnonymous) {
+            // An unnamed file gets a name (linkat cannot replace one), which rename() then moves
+            // over the destination in one step.
+            const std::string self = fmt::format("/proc/self/fd/{}", mFd);
+            for (int attempt = 0; attempt < 16; ++attempt) {
+                mTemp = tempName();
+                if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, mTemp.c_str(), AT_SYMLINK_FOLLOW) == 0) break;
+                const int error = errno;
+                mTemp.clear();
+                if (error != EEXIST) writeFailed(mDestination, errnoText(error));
+            }
+            if (mTemp.empty()) writeFailed(mDestination, errnoText(EEXIST));
+        }
         const int fd = mFd;
         mFd = -1;
         if (::close(fd) != 0) writeFailed(mDestination, errnoText(errno));
@@ -163,9 +178,28 @@ public:
     }
 
 private:
+    /// Hidden and uniquely named so that concurrent writers of the same file never collide.
+    fs::path tempName() const
+    {
+        static thread_local std::random_device random;
+        const uint64_t tag = (uint64_t(random()) << 32) ^ random();
+        return mDestination.parent_path() / fmt::format(".{}.{:016x}.tmp", mDestination.filename().string(), tag);
+    }
+    void createNamed()
+    {
+        for (int attempt = 0; attempt < 16; ++attempt) {
+            mTemp = tempName();
+            mFd = ::open(mTemp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+            if (mFd >= 0) return;
+            mTemp.clear();
+            if (errno != EEXIST) return;
+        }
+    }
+
     fs::path mDestination;
     fs::path mTemp;
     int mFd = -1;
+    bool mAnonymous = false; ///< O_TMPFILE: no name until commit()
     uint64_t mPosition = 0;
     int mError = 0;
     bool mCommitted = false;
@@ -239,7 +273,9 @@ struct StbInput {
         auto& self = *static_cast<StbInput*>(user);
         const size_t n = std::min(size_t(size), self.data.size() - self.position);
         if (size > 0 && n == 0) self.overran = true;
-        std::memcpy(out, self.data.data() + self.position, n);
+        // memcpy's pointers must be valid even for zero bytes; an empty vector's data() is null
+        // (UBSan, from the unit tests).
+        if (n > 0) std::memcpy(out, self.data.data() + self.position, n);
         self.position += n;
         return int(n);
     }
@@ -281,8 +317,76 @@ bool isExr(const std::vector<char>& data)
     return data.size() >= 4 && std::memcmp(data.data(), kMagic, 4) == 0;
 }
 
+/// Walks the header(s) of an OpenEXR file before OpenEXR reads it: OpenEXR allocates each
+/// attribute's declared size, and the tables of chunk offsets from the data window, before it
+/// checks either against the file, so a forged size of 2 GiB in a 100-byte file is an
+/// out-of-memory kill (found by an earlier fuzzing attempt on issue 16; the reproducer is
+/// tests/unit/test_image_io.cpp, ExrAttributeSizeBeyondTheFileIsAnError). Returns the problem found, or nothing; the
+/// rest (a bad type, bad compression) is left to OpenEXR, which reports it.
+std::optional<std::string> checkExrHeader(const std::vector<char>& data)
+{
+    const size_t size = data.size();
+    if (size < 8) return std::string("the file is truncated");
+    const auto u32 = [&](size_t at) {
+        uint32_t v = 0;
+        std::memcpy(&v, data.data() + at, 4); // little endian, as are our targets
+        return v;
+    };
+    const uint32_t flags = u32(4) >> 8;
+    const bool longNames = flags & 0x4, multiPart = flags & 0x10;
+    const size_t maxName = longNames ? 255 : 31;
+    size_t pos = 8;
+    // A null-terminated name of at most maxName characters, or nothing.
+    const auto name = [&]() -> std::optional<std::string> {
+        const size_t limit = std::min(size - pos, maxName + 1);
+        const void* end = std::memchr(data.data() + pos, '\0', limit);
+        if (!end) return std::nullopt;
+        std::string text(data.data() + pos, static_cast<const char*>(end));
+        pos += text.size() + 1;
+        return text;
+    };
+    for (int part = 0;; ++part) {
+        if (pos >= size) return std::string("the file is truncated");
+        if (data[pos] == '\0') {
+            ++pos; // the end of the headers (multi-part), or an empty header
+            if (part == 0) return std::string("the header is empty");
+            break;
+        }
+        for (;;) {
+            if (pos >= size) return std::string("the file is truncated");
+            if (data[pos] == '\0') {
+                ++pos;
+                break;
+            }
+            // A name without its terminator is a truncated file when the file ends first.
+            const auto attribute = name();
+            if (!attribute && size - pos <= maxName) return std::string("the file is truncated");
+            if (!attribute) return std::string("an attribute name is too long or unterminated");
+            const auto type = name();
+            if (!type && size - pos <= maxName) return std::string("the file is truncated");
+            if (!type) return fmt::format("attribute {}: its type name is too long or unterminated", *attribute);
+            if (size - pos < 4) return std::string("the file is truncated");
+            const int32_t length = int32_t(u32(pos));
+            pos += 4;
+            if (length < 0 || size_t(length) > size - pos)
+                return fmt::format("attribute {} declares {} bytes, more than the file holds", *attribute, length);
+            if (*attribute == "dataWindow" && *type == "box2i" && length == 16) {
+                const int64_t xMin = int32_t(u32(pos)), yMin = int32_t(u32(pos + 4));
+                const int64_t xMax = int32_t(u32(pos + 8)), yMax = int32_t(u32(pos + 12));
+                const int64_t width = xMax - xMin + 1, height = yMax - yMin + 1;
+                if (width <= 0 || height <= 0 || uint64_t(width) * uint64_t(height) > kMaxPixels)
+                    return fmt::format("unsupported image size {}x{}", width, height);
+            }
+            pos += size_t(length);
+        }
+        if (!multiPart) break;
+    }
+    return std::nullopt;
+}
+
 ImageFloat readExr(const fs::path& path, const std::vector<char>& data)
 {
+    if (const auto problem = checkExrHeader(data)) readFailed(path, *problem);
     try {
         ExrInput stream(data, path);
         Imf::RgbaInputFile file(stream);
@@ -460,8 +564,15 @@ void writeExr(const fs::path& path, const ImageFloat& image)
 ImageRGBA8 readPng(const fs::path& path)
 {
     const std::vector<char> data = readFile(path);
-    StbInput input{data};
     int width = 0, height = 0, channels = 0;
+    // stb_image allocates the whole image from the header's size before reading the pixels.
+    {
+        StbInput probe{data};
+        if (stbi_info_from_callbacks(&StbInput::kCallbacks, &probe, &width, &height, &channels) &&
+            uint64_t(width) * uint64_t(height) > kMaxPixels)
+            readFailed(path, fmt::format("unsupported image size {}x{}", width, height));
+    }
+    StbInput input{data};
     std::unique_ptr<stbi_uc, StbFree> pixels(
         stbi_load_from_callbacks(&StbInput::kCallbacks, &input, &width, &height, &channels, 4));
     if (!pixels) readFailed(path, fmt::format("not a readable image ({})", stbi_failure_reason()));
@@ -475,7 +586,11 @@ ImageRGBA8 readPng(const fs::path& path)
 
 ImageFloat readFloatImage(const fs::path& path)
 {
-    const std::vector<char> data = readFile(path);
+    return decodeFloatImage(readFile(path), path);
+}
+
+ImageFloat decodeFloatImage(const std::vector<char>& data, const fs::path& path)
+{
     if (isExr(data)) return readExr(path, data);
     // Checked first because stbi_loadf would also accept an 8-bit image, silently linearising it
     // with an assumed gamma of 2.2.

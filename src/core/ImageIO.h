@@ -39,6 +39,8 @@ ImageRGBA8 readPng(const std::filesystem::path& path);
 /// Negative and NaN values (lossy EXR compression rings below zero around bright sources)
 /// become 0 so they cannot poison filtering; infinities become the largest half, 65504.
 ImageFloat readFloatImage(const std::filesystem::path& path);
+/// The same from the file's bytes; `path` names it in messages (the fuzzers read this way).
+ImageFloat decodeFloatImage(const std::vector<char>& data, const std::filesystem::path& path);
 
 /// Checks an output path before long work: known extension (.png .hdr .exr, any case), the
 /// directory exists and a file can be created in it. Throws Error otherwise.

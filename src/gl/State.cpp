@@ -253,4 +253,11 @@ size_t maxTextureBufferTexels()
     return size_t(texels);
 }
 
+int maxTextureSize()
+{
+    GLint size = 16384; // the GL 4.5 minimum
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
+    return int(size);
+}
+
 } // namespace specula::gl

@@ -126,5 +126,7 @@ void bindStorageBuffer(uint32_t binding, const Buffer& buffer);
 size_t maxStorageBlockSize();
 /// GL_MAX_TEXTURE_BUFFER_SIZE of the current context: the most texels a buffer texture views.
 size_t maxTextureBufferTexels();
+/// GL_MAX_TEXTURE_SIZE of the current context: the widest and tallest 2D texture (16384 on llvmpipe).
+int maxTextureSize();
 
 } // namespace specula::gl

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <optional>
+#include <string>
 
 #include "core/Log.h"
 #include "gl/State.h"
@@ -26,6 +28,34 @@ gl::Wrap toGl(scene::Wrap w)
     case scene::Wrap::ClampToEdge: return gl::Wrap::ClampToEdge;
     }
     return gl::Wrap::Repeat;
+}
+
+/// `source` box-filtered down to fit `maxSize` on both sides, keeping its aspect ratio (each
+/// output texel averages the source texels its footprint covers, at least one).
+scene::Image downscaled(const scene::Image& source, int maxSize)
+{
+    const double scale = double(maxSize) / double(std::max(source.width, source.height));
+    scene::Image out;
+    out.name = source.name;
+    out.width = std::clamp(int(source.width * scale), 1, maxSize);
+    out.height = std::clamp(int(source.height * scale), 1, maxSize);
+    out.pixels.resize(size_t(out.width) * size_t(out.height) * 4);
+    for (int y = 0; y < out.height; ++y) {
+        const int y0 = int(int64_t(y) * source.height / out.height);
+        const int y1 = std::max(y0 + 1, int(int64_t(y + 1) * source.height / out.height));
+        for (int x = 0; x < out.width; ++x) {
+            const int x0 = int(int64_t(x) * source.width / out.width);
+            const int x1 = std::max(x0 + 1, int(int64_t(x + 1) * source.width / out.width));
+            uint64_t sum[4] = {0, 0, 0, 0};
+            for (int sy = y0; sy < y1; ++sy)
+                for (int sx = x0; sx < x1; ++sx)
+                    for (int c = 0; c < 4; ++c) sum[c] += source.pixels[(size_t(sy) * size_t(source.width) + size_t(sx)) * 4 + size_t(c)];
+            const uint64_t n = uint64_t(y1 - y0) * uint64_t(x1 - x0);
+            for (int c = 0; c < 4; ++c)
+                out.pixels[(size_t(y) * size_t(out.width) + size_t(x)) * 4 + size_t(c)] = uint8_t((sum[c] + n / 2) / n);
+        }
+    }
+    return out;
 }
 
 void packTransform(shared::GpuMaterial& gpu, int slot, const scene::TextureRef& ref)
@@ -53,18 +83,28 @@ const gl::Texture* GpuScene::texture(const scene::Scene& scene, int image, bool 
         return nullptr; // missing or undecodable: the renderer binds a neutral texture
     gl::Texture& slot = mTextures[size_t(image)][srgb ? 1 : 0];
     if (!slot) {
+        // A texture larger than the GL limit is a GL error; shrink it instead, once per image.
+        const int maxSize = gl::maxTextureSize();
+        std::optional<scene::Image> smaller;
+        if (source.width > maxSize || source.height > maxSize) {
+            smaller = downscaled(source, maxSize);
+            log::warn("{} is {}x{}, larger than this GPU's texture limit of {}; downscaled to {}x{}",
+                      source.name.empty() ? "image " + std::to_string(image) : source.name, source.width, source.height,
+                      maxSize, smaller->width, smaller->height);
+        }
+        const scene::Image& pixels = smaller ? *smaller : source;
         gl::TextureDesc desc;
         desc.format = srgb ? gl::Format::SRGB8_ALPHA8 : gl::Format::RGBA8;
-        desc.width = source.width;
-        desc.height = source.height;
+        desc.width = pixels.width;
+        desc.height = pixels.height;
         desc.levels = 0;
         desc.label = source.name.empty() ? "image " + std::to_string(image) : source.name;
         slot = gl::Texture(desc);
         // Rows go up top row first: GL's t = 0 is then the image's top, which is where glTF's
         // v = 0 is, so uvs need no flip.
-        slot.upload(0, 0, 4, gl::PixelType::UnsignedByte, source.pixels.data());
+        slot.upload(0, 0, 4, gl::PixelType::UnsignedByte, pixels.pixels.data());
         slot.generateMipmaps();
-        mTextureBytes += source.pixels.size() * 4 / 3;
+        mTextureBytes += pixels.pixels.size() * 4 / 3;
     }
     return &slot;
 }

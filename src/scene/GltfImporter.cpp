@@ -313,7 +313,7 @@ void Importer::chooseRoots()
 
 namespace {
 
-using gltf_detail::ImageFailures;
+using gltf_detail::ImageDecoding;
 using gltf_detail::Importer;
 using gltf_detail::loadImageData;
 
@@ -329,9 +329,6 @@ std::vector<unsigned char> readFile(const fs::path& path, const std::string& fil
     if (!in) throw Error("{}: cannot open the file", file);
     std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (in.bad()) throw Error("{}: cannot read the file", file);
-    if (bytes.empty()) throw Error("{}: the file is empty", file);
-    // tinygltf takes 32-bit lengths; GLB cannot exceed 4 GiB either.
-    if (bytes.size() >= std::numeric_limits<uint32_t>::max()) throw Error("{}: the file is too large", file);
     return bytes;
 }
 
@@ -377,61 +374,230 @@ std::string describeLoadError(const std::string& err)
     return message;
 }
 
+/// tinygltf's own spelling of percent-decoding (dlib::urldecode, '+' as a space too), so that the
+/// checks see the path tinygltf will open.
+std::string decodeUri(std::string_view uri)
+{
+    const auto hex = [](char c) -> unsigned {
+        if (c >= '0' && c <= '9') return unsigned(c - '0');
+        if (c >= 'a' && c <= 'f') return unsigned(c - 'a' + 10);
+        if (c >= 'A' && c <= 'F') return unsigned(c - 'A' + 10);
+        return 0;
+    };
+    std::string out;
+    for (size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '+') {
+            out += ' ';
+        } else if (uri[i] == '%' && uri.size() > i + 2) {
+            out += char((hex(uri[i + 1]) << 4) | hex(uri[i + 2]));
+            i += 2;
+        } else {
+            out += uri[i];
+        }
+    }
+    return out;
+}
+
+/// The first refusal of a declared reference or size, before tinygltf reads or allocates
+/// anything for it: URIs outside the model's folder, buffers and accessors over the limits.
+/// Anything malformed is left to tinygltf, which reports it.
+void checkDeclarations(const std::string& file, std::string_view json, const fs::path& directory,
+                       const LoadOptions& options)
+{
+    const auto document = nlohmann::json::parse(json.begin(), json.end(), nullptr, /*allow_exceptions*/ false);
+    if (!document.is_object()) return;
+    const auto array = [&](const char* key) -> const nlohmann::json* {
+        const auto it = document.find(key);
+        return it != document.end() && it->is_array() ? &*it : nullptr;
+    };
+    const auto checkUri = [&](const nlohmann::json& item, const char* kind, size_t index) {
+        const auto uri = item.find("uri");
+        if (uri == item.end() || !uri->is_string()) return;
+        const auto& text = uri->get_ref<const std::string&>();
+        if (text.starts_with("data:")) return; // embedded, no file
+        const std::string decoded = decodeUri(text);
+        if (const auto reason = refuseReference(directory, decoded, options.allowExternalFiles)) {
+            throw Error("{}: {}[{}].uri '{}' {}: refused{}", file, kind, index, text, *reason,
+                        options.allowExternalFiles ? "" : " (--allow-external-files allows files outside it)");
+        }
+    };
+    const auto declared = [](const nlohmann::json& item, const char* key) -> std::optional<double> {
+        const auto it = item.find(key);
+        if (it == item.end() || !it->is_number()) return std::nullopt;
+        return it->get<double>();
+    };
+    const LoadLimits& limits = options.limits;
+    if (const auto* buffers = array("buffers")) {
+        for (size_t i = 0; i < buffers->size(); ++i) {
+            const auto& buffer = (*buffers)[i];
+            if (!buffer.is_object()) continue;
+            const auto bytes = declared(buffer, "byteLength");
+            if (bytes && *bytes > double(limits.maxBufferBytes))
+                throw Error("{}: buffers[{}] declares {} bytes, over the limit of {} (--max-buffer-bytes)", file, i,
+                            *bytes, limits.maxBufferBytes);
+            checkUri(buffer, "buffers", i);
+        }
+    }
+    if (const auto* accessors = array("accessors")) {
+        for (size_t i = 0; i < accessors->size(); ++i) {
+            const auto& accessor = (*accessors)[i];
+            if (!accessor.is_object()) continue;
+            const auto count = declared(accessor, "count");
+            if (count && *count > double(limits.maxAccessorCount))
+                throw Error("{}: accessors[{}] declares {} elements, over the limit of {} (--max-accessor-count)", file,
+                            i, *count, limits.maxAccessorCount);
+        }
+    }
+    if (const auto* images = array("images")) {
+        for (size_t i = 0; i < images->size(); ++i)
+            if ((*images)[i].is_object()) checkUri((*images)[i], "images", i);
+    }
+}
+
+/// tinygltf opens files through these. checkDeclarations has refused the URIs outside the
+/// model's folder; these hold the line whatever tinygltf does with a URI (it also looks in the
+/// current directory) and keep a file over the buffer limit from being read at all.
+struct FileAccess {
+    fs::path root; ///< canonical
+    const LoadOptions& options;
+    std::string refusal; ///< the first file refused, as the end of a message naming the model
+
+    bool allowed(const std::string& path) const
+    {
+        if (options.allowExternalFiles) return true;
+        std::error_code ec;
+        const fs::path resolved = fs::weakly_canonical(path, ec);
+        if (ec) return false;
+        auto r = root.begin();
+        for (auto p = resolved.begin(); r != root.end(); ++r, ++p)
+            if (!r->empty() && (p == resolved.end() || *p != *r)) return false;
+        return true;
+    }
+    static bool exists(const std::string& path, void* user)
+    {
+        std::error_code ec;
+        return static_cast<FileAccess*>(user)->allowed(path) && fs::is_regular_file(path, ec);
+    }
+    static std::string expand(const std::string& path, void*) { return path; } // no ~ or $VARS
+    static bool read(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user)
+    {
+        auto& self = *static_cast<FileAccess*>(user);
+        if (!self.allowed(path)) {
+            if (err) *err = "outside the model's folder";
+            return false;
+        }
+        std::error_code ec;
+        const uintmax_t size = fs::file_size(path, ec);
+        if (ec) {
+            if (err) *err = ec.message();
+            return false;
+        }
+        if (size > self.options.limits.maxBufferBytes) {
+            self.refusal = fmt::format("{} is {} bytes, over the limit of {} (--max-buffer-bytes)", path, size,
+                                       self.options.limits.maxBufferBytes);
+            if (err) *err = self.refusal;
+            return false;
+        }
+        std::ifstream in(path, std::ios::binary);
+        if (!in) {
+            if (err) *err = "cannot open the file";
+            return false;
+        }
+        out->resize(size_t(size));
+        if (size > 0 && !in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) {
+            if (err) *err = "cannot read the file";
+            return false;
+        }
+        return true;
+    }
+    static bool write(std::string* err, const std::string&, const std::vector<unsigned char>&, void*)
+    {
+        if (err) *err = "the importer writes no files";
+        return false;
+    }
+};
+
+Scene loadFromBytes(const std::string& file, const fs::path& path, const std::vector<unsigned char>& bytes,
+                    const LoadOptions& options)
+{
+    if (bytes.empty()) throw Error("{}: the file is empty", file);
+    // tinygltf takes 32-bit lengths; GLB cannot exceed 4 GiB either.
+    if (bytes.size() >= std::numeric_limits<uint32_t>::max()) throw Error("{}: the file is too large", file);
+    const bool binary = bytes.size() >= 4 && readU32(bytes, 0) == kGlbMagic;
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension == ".glb" && !binary) throw Error("{}: not a binary glTF file (no 'glTF' magic)", file);
+    if (binary) {
+        // tinygltf reports all of these as "Invalid glTF binary"; say which.
+        if (bytes.size() < 20) throw Error("{}: truncated .glb: {} bytes is less than a header", file, bytes.size());
+        if (readU32(bytes, 4) != 2) throw Error("{}: unsupported .glb version {}", file, readU32(bytes, 4));
+        if (readU32(bytes, 8) > bytes.size())
+            throw Error("{}: truncated .glb: the header says {} bytes but the file has {}", file, readU32(bytes, 8),
+                        bytes.size());
+        if (readU32(bytes, 16) != kGlbJsonChunk) throw Error("{}: the first chunk of the .glb is not JSON", file);
+        if (uint64_t(readU32(bytes, 12)) + 20 > bytes.size())
+            throw Error("{}: truncated .glb: the JSON chunk needs {} bytes but the file has {}", file,
+                        uint64_t(readU32(bytes, 12)) + 20, bytes.size());
+    }
+    const fs::path directory = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+    checkDeclarations(file, jsonText(bytes, binary), directory, options);
+
+    tinygltf::TinyGLTF loader;
+    ImageDecoding images;
+    images.limits = options.limits;
+    loader.SetImageLoader(&loadImageData, &images);
+    std::error_code ec;
+    FileAccess access{fs::weakly_canonical(directory, ec), options, {}};
+    loader.SetFsCallbacks({&FileAccess::exists, &FileAccess::expand, &FileAccess::read, &FileAccess::write, &access});
+    tinygltf::Model model;
+    std::string err, warn;
+    const std::string baseDir = directory.string();
+    bool loaded = false;
+    try {
+        loaded = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir)
+                        : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                                     unsigned(bytes.size()), baseDir);
+    } catch (const std::exception& e) {
+        // tinygltf reports most problems through `err`, but not all (vector::at, bad_alloc).
+        err = e.what();
+    }
+    if (!images.refusal.empty()) throw Error("{}: {}", file, images.refusal);
+    if (!access.refusal.empty()) throw Error("{}: {}", file, access.refusal);
+    if (!loaded) {
+        const std::string extensionName = unsupportedRequiredExtension(jsonText(bytes, binary));
+        if (!extensionName.empty()) throw Error("{}: requires the unsupported extension {}", file, extensionName);
+        throw Error("{}: {}", file, describeLoadError(err));
+    }
+    // Missing images are reported again, with their consequence, by the importer.
+    if (!warn.empty()) log::debug("{}: tinygltf: {}", file, oneLine(warn));
+
+    return Importer(file, path.stem().string(), model, images).run();
+}
+
 } // namespace
 
-Scene loadGltf(const fs::path& path)
+Scene loadGltf(const fs::path& path, const LoadOptions& options)
 {
     const std::string file = path.string();
     try {
-        const std::vector<unsigned char> bytes = readFile(path, file);
-        const bool binary = bytes.size() >= 4 && readU32(bytes, 0) == kGlbMagic;
-        std::string extension = path.extension().string();
-        std::transform(extension.begin(), extension.end(), extension.begin(),
-                       [](unsigned char c) { return char(std::tolower(c)); });
-        if (extension == ".glb" && !binary) throw Error("{}: not a binary glTF file (no 'glTF' magic)", file);
-        if (binary) {
-            // tinygltf reports all of these as "Invalid glTF binary"; say which.
-            if (bytes.size() < 20)
-                throw Error("{}: truncated .glb: {} bytes is less than a header", file, bytes.size());
-            if (readU32(bytes, 4) != 2) throw Error("{}: unsupported .glb version {}", file, readU32(bytes, 4));
-            if (readU32(bytes, 8) > bytes.size())
-                throw Error("{}: truncated .glb: the header says {} bytes but the file has {}", file, readU32(bytes, 8),
-                            bytes.size());
-            if (readU32(bytes, 16) != kGlbJsonChunk) throw Error("{}: the first chunk of the .glb is not JSON", file);
-            if (uint64_t(readU32(bytes, 12)) + 20 > bytes.size())
-                throw Error("{}: truncated .glb: the JSON chunk needs {} bytes but the file has {}", file,
-                            uint64_t(readU32(bytes, 12)) + 20, bytes.size());
-        }
-
-        tinygltf::TinyGLTF loader;
-        ImageFailures imageFailures;
-        loader.SetImageLoader(&loadImageData, &imageFailures);
-        tinygltf::Model model;
-        std::string err, warn;
-        const std::string baseDir = path.parent_path().string();
-        bool loaded = false;
-        try {
-            loaded =
-                binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir)
-                       : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
-                                                    unsigned(bytes.size()), baseDir);
-        } catch (const std::exception& e) {
-            // tinygltf reports most problems through `err`, but not all (vector::at, bad_alloc).
-            err = e.what();
-        }
-        if (!loaded) {
-            const std::string extensionName = unsupportedRequiredExtension(jsonText(bytes, binary));
-            if (!extensionName.empty()) throw Error("{}: requires the unsupported extension {}", file, extensionName);
-            throw Error("{}: {}", file, describeLoadError(err));
-        }
-        // Missing images are reported again, with their consequence, by the importer.
-        if (!warn.empty()) log::debug("{}: tinygltf: {}", file, oneLine(warn));
-
-        return Importer(file, path.stem().string(), model, std::move(imageFailures)).run();
+        return loadFromBytes(file, path, readFile(path, file), options);
     } catch (const Error&) {
         throw;
     } catch (const std::exception& e) {
         // bad_alloc and the like: still the user's file at fault, still one line.
+        throw Error("{}: {}", file, e.what());
+    }
+}
+
+Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, const fs::path& path, const LoadOptions& options)
+{
+    const std::string file = path.string();
+    try {
+        return loadFromBytes(file, path, bytes, options);
+    } catch (const Error&) {
+        throw;
+    } catch (const std::exception& e) {
         throw Error("{}: {}", file, e.what());
     }
 }

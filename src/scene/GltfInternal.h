@@ -13,6 +13,7 @@
 
 #include "core/Error.h"
 #include "core/Log.h"
+#include "scene/LoadOptions.h"
 #include "scene/Scene.h"
 
 namespace specula::scene::gltf_detail {
@@ -20,7 +21,17 @@ namespace specula::scene::gltf_detail {
 /// Why each image that failed to decode failed, by image index.
 using ImageFailures = std::map<int, std::string>;
 
-// tinygltf's image callback (GltfMaterials.cpp).
+/// Decoding a model's images, shared by tinygltf's image callback (external and data-URI
+/// images) and the importer (bufferView images): what failed, and what the images may cost.
+struct ImageDecoding {
+    ImageFailures failures;
+    LoadLimits limits;
+    uint64_t textureBytes = 0; ///< decoded so far, RGBA8
+    /// The first image over a limit, as the end of a message naming the file: the load fails with it.
+    std::string refusal;
+};
+
+// tinygltf's image callback (GltfMaterials.cpp); `user` is an ImageDecoding.
 bool loadImageData(tinygltf::Image* image, const int imageIndex, std::string* /*err*/, std::string* /*warn*/,
                    int /*reqWidth*/, int /*reqHeight*/, const unsigned char* bytes, int size, void* user);
 
@@ -40,8 +51,8 @@ struct AccessorData;
 
 class Importer {
 public:
-    Importer(std::string file, std::string name, tinygltf::Model& model, ImageFailures imageFailures)
-        : mFile(std::move(file)), mModel(model), mImageFailures(std::move(imageFailures))
+    Importer(std::string file, std::string name, tinygltf::Model& model, ImageDecoding& images)
+        : mFile(std::move(file)), mModel(model), mImages(images)
     {
         mScene.name = std::move(name);
     }
@@ -134,7 +145,7 @@ private:
 
     std::string mFile; ///< the path as the user gave it, for messages
     tinygltf::Model& mModel;
-    ImageFailures mImageFailures;
+    ImageDecoding& mImages;
     Scene mScene;
     std::vector<int> mParent; ///< per node, -1 for roots
 };

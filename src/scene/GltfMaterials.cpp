@@ -16,12 +16,33 @@ namespace {
 /// Decodes an encoded image (PNG, JPEG, ...) to RGBA8 into `image`; returns why it failed, or "".
 /// Rows come out top first as Image wants, as long as nobody turns on stb's vertical flip (a
 /// process-wide setting; nothing in Specula does).
-std::string decodeRgba8(const unsigned char* bytes, size_t size, tinygltf::Image& image)
+/// An image over a limit sets `decoding.refusal` (the load fails) before anything is decoded:
+/// stb_image allocates the whole image from the header's size before it reads the pixels, so a
+/// few hundred forged bytes would otherwise cost gigabytes.
+std::string decodeRgba8(const unsigned char* bytes, size_t size, tinygltf::Image& image, int index,
+                        ImageDecoding& decoding)
 {
     if (size == 0) return "the image data is empty";
     if (size > size_t(std::numeric_limits<int>::max())) return "the image data is too large";
     const int length = int(size);
     int width = 0, height = 0, channels = 0;
+    if (stbi_info_from_memory(bytes, length, &width, &height, &channels)) {
+        const LoadLimits& limits = decoding.limits;
+        const uint64_t bytesNeeded = uint64_t(width) * uint64_t(height) * 4;
+        if (width > limits.maxImageSize || height > limits.maxImageSize) {
+            decoding.refusal = fmt::format("image {} is {}x{} pixels, over the limit of {} per side (--max-image-size)",
+                                           index, width, height, limits.maxImageSize);
+            return decoding.refusal;
+        }
+        if (bytesNeeded > limits.maxTextureBytes - std::min(limits.maxTextureBytes, decoding.textureBytes)) {
+            decoding.refusal =
+                fmt::format("image {} ({}x{}) brings the model's textures to {} bytes, over the limit of {} "
+                            "(--max-texture-memory)", index, width, height, decoding.textureBytes + bytesNeeded,
+                            limits.maxTextureBytes);
+            return decoding.refusal;
+        }
+        decoding.textureBytes += bytesNeeded;
+    }
     std::vector<unsigned char> pixels;
     // stb_image also reads 16-bit PNGs through stbi_load, but truncates them (v >> 8); read
     // them at 16 bits and round instead, so 8-bit values stored as 16-bit ones survive exactly.
@@ -55,14 +76,19 @@ std::string decodeRgba8(const unsigned char* bytes, size_t size, tinygltf::Image
 
 /// tinygltf's image callback. tinygltf fails the whole load when its own loader cannot decode
 /// an image; ours records the problem and carries on, leaving the image empty.
-bool loadImageData(tinygltf::Image* image, const int imageIndex, std::string* /*err*/, std::string* /*warn*/,
+bool loadImageData(tinygltf::Image* image, const int imageIndex, std::string* err, std::string* /*warn*/,
                    int /*reqWidth*/, int /*reqHeight*/, const unsigned char* bytes, int size, void* user)
 {
     // Images in a bufferView are decoded later, from the bufferView once it is known to lie
     // inside its buffer: tinygltf hands us a pointer whose range it has not checked.
     if (image->bufferView >= 0) return true;
-    const std::string reason = decodeRgba8(bytes, size_t(std::max(size, 0)), *image);
-    if (!reason.empty()) (*static_cast<ImageFailures*>(user))[imageIndex] = reason;
+    auto& decoding = *static_cast<ImageDecoding*>(user);
+    const std::string reason = decodeRgba8(bytes, size_t(std::max(size, 0)), *image, imageIndex, decoding);
+    if (!decoding.refusal.empty()) {
+        if (err) *err = decoding.refusal; // loadGltf reports decoding.refusal itself
+        return false;
+    }
+    if (!reason.empty()) decoding.failures[imageIndex] = reason;
     return true;
 }
 
@@ -81,12 +107,13 @@ void Importer::convertImages()
             // checkBufferViews has made sure the view lies inside its buffer.
             const tinygltf::BufferView& view = at(mModel.bufferViews, source.bufferView, "bufferView", where);
             const unsigned char* bytes = mModel.buffers[size_t(view.buffer)].data.data() + view.byteOffset;
-            failure = decodeRgba8(bytes, view.byteLength, source);
+            failure = decodeRgba8(bytes, view.byteLength, source, int(i), mImages);
+            if (!mImages.refusal.empty()) fail("{}", mImages.refusal);
         } else if (source.image.empty()) {
             // tinygltf leaves an image empty, with a warning of its own, when it cannot read
             // the file; decoding failures were recorded by loadImageData.
-            const auto it = mImageFailures.find(int(i));
-            failure = it != mImageFailures.end() ? it->second : "the file is missing or unreadable";
+            const auto it = mImages.failures.find(int(i));
+            failure = it != mImages.failures.end() ? it->second : "the file is missing or unreadable";
         }
 
         Image image;

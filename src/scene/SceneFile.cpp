@@ -113,43 +113,55 @@ void checkIsFile(const fs::path& path)
 
 } // namespace
 
+fs::path Files::resolve(const Object& object, std::string_view key, const std::string& file) const
+{
+    if (const auto reason = refuseReference(directory, file, options.allowExternalFiles))
+        object.fail(key, fmt::format("'{}' {}: refused{}", file, *reason,
+                                     options.allowExternalFiles ? "" : " (--allow-external-files allows files outside it)"));
+    return fs::path(file).is_absolute() ? fs::path(file) : directory / file;
+}
+
 } // namespace scenefile_detail
 
 // The sections' parsers and the helpers they share (SceneFileInternal.h).
 using namespace scenefile_detail;
 
-SceneDocument loadScene(const fs::path& path)
+SceneDocument loadScene(const fs::path& path, const LoadOptions& options)
 {
     checkIsFile(path);
     const std::string extension = lowercase(path.extension().string());
     if (extension == ".gltf" || extension == ".glb") {
         SceneDocument document;
-        document.scene = loadGltf(path);
+        document.scene = loadGltf(path, options);
         document.source = path;
         return document;
     }
-    if (extension == ".json") return loadSceneFile(path);
+    if (extension == ".json") return loadSceneFile(path, options);
     throw Error("{}: unknown scene format (use .gltf, .glb or .json)", path.string());
 }
 
-SceneDocument loadSceneFile(const fs::path& path)
+SceneDocument loadSceneFile(const fs::path& path, const LoadOptions& options)
 {
     checkIsFile(path);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error("{}: cannot read: {}", path.string(), std::generic_category().message(errno));
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (in.bad()) throw Error("{}: cannot read: {}", path.string(), std::generic_category().message(errno));
+    return loadSceneText(text, path, options);
+}
 
+SceneDocument loadSceneText(const std::string& text, const fs::path& path, const LoadOptions& options)
+{
     const Json json = parseJson(path, text);
     const Object root(path, json, "", {"models", "shapes", "lights", "billboards", "camera", "environment", "render", "post"});
-    const fs::path directory = path.parent_path();
+    const Files files{path.parent_path(), options};
 
     SceneDocument document;
     document.source = path;
     Scene& scene = document.scene;
     scene.name = path.stem().string();
 
-    for (const Object& model : root.objects("models", withTransform({"path", "name", "materials", "castShadows", "receiveShadows"}))) parseModel(model, scene, directory);
+    for (const Object& model : root.objects("models", withTransform({"path", "name", "materials", "castShadows", "receiveShadows"}))) parseModel(model, scene, files);
     const auto shapes = root.objects("shapes", withTransform({"type", "name", "radius", "segments", "rings", "halfExtent",
                                                               "size", "uvRepeat", "material", "castShadows", "receiveShadows"}));
     for (size_t i = 0; i < shapes.size(); ++i) parseShape(shapes[i], scene, i);
@@ -160,7 +172,7 @@ SceneDocument loadSceneFile(const fs::path& path)
     const auto billboards = root.objects("billboards", {"name", "kind", "sprite", "image", "size", "sizeInPixels", "anchor",
                                                         "tint", "alphaMode", "alphaCutoff", "axis", "sectorLight",
                                                         "position", "billboards", "scatter"});
-    for (size_t i = 0; i < billboards.size(); ++i) parseBillboardGroup(billboards[i], scene, directory, i);
+    for (size_t i = 0; i < billboards.size(); ++i) parseBillboardGroup(billboards[i], scene, files, i);
     if (const auto camera = root.object("camera", {"type", "name", "position", "target", "direction", "up", "yfov",
                                                    "aspectRatio", "znear", "zfar", "xmag", "ymag", "aperture", "shutter",
                                                    "iso"})) {
@@ -168,7 +180,7 @@ SceneDocument loadSceneFile(const fs::path& path)
         document.render.cameraExposure = parseCameraExposure(*camera);
     }
     if (const auto environment = root.object("environment", {"color", "file", "intensity", "rotation"}))
-        document.environment = parseEnvironment(*environment, directory);
+        document.environment = parseEnvironment(*environment, files);
     if (const auto render = root.object("render", {"width", "height", "msaa", "exposure", "tonemap", "brdfG", "shading",
                                                    "defaultLights", "ev100"})) {
         const auto cameraExposure = document.render.cameraExposure;

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "scene/LoadOptions.h"
 #include "scene/Scene.h"
 #include "settings/PassSettings.h"
 
@@ -56,8 +57,12 @@ struct SceneDocument {
 
 /// Loads a .gltf/.glb (via loadGltf) or a .json scene file, by extension.
 /// Throws specula::Error with a one-line message naming the file.
-SceneDocument loadScene(const std::filesystem::path& path);
+/// `options`: which files it may name, what it may allocate (scene/LoadOptions.h).
+SceneDocument loadScene(const std::filesystem::path& path, const LoadOptions& options = {});
 /// Loads a JSON scene file.
-SceneDocument loadSceneFile(const std::filesystem::path& path);
+SceneDocument loadSceneFile(const std::filesystem::path& path, const LoadOptions& options = {});
+/// A JSON scene file from its text; `path` names it in messages and its directory is where its
+/// paths resolve (the fuzzers read this way).
+SceneDocument loadSceneText(const std::string& text, const std::filesystem::path& path, const LoadOptions& options = {});
 
 } // namespace specula::scene

@@ -41,7 +41,9 @@ public:
         : mFile(file), mJson(json), mWhere(std::move(where))
     {
         if (!json.is_object()) fail(mWhere.empty() ? "the file must contain a JSON object" : mWhere + " must be an object");
-        for (const auto& [key, value] : json.items()) {
+        for (const auto& item : json.items()) {
+            // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+            const std::string& key = item.key();
             if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
             std::string message = fmt::format("unknown key '{}'", key);
             if (!mWhere.empty()) message += " in " + mWhere;
@@ -202,16 +204,25 @@ private:
     std::string mWhere;
 };
 
+/// The files a scene file names: relative to its directory and inside its tree unless
+/// LoadOptions::allowExternalFiles (SceneFile.cpp).
+struct Files {
+    fs::path directory;
+    const LoadOptions& options;
+    /// The path `file` (the value of `key` in `object`) names, or a one-line refusal.
+    fs::path resolve(const Object& object, std::string_view key, const std::string& file) const;
+};
+
 // Models and shapes (SceneFileModels.cpp)
 std::vector<std::string_view> withTransform(std::vector<std::string_view> keys);
 void parseShape(const Object& object, Scene& scene, size_t index);
-void parseModel(const Object& object, Scene& scene, const fs::path& directory);
+void parseModel(const Object& object, Scene& scene, const Files& files);
 
 // Lights, the camera, billboards and the settings sections (SceneFileSections.cpp)
 void parseLight(const Object& object, Scene& scene, size_t index);
 void parseCamera(const Object& object, Scene& scene);
-void parseBillboardGroup(const Object& object, Scene& scene, const fs::path& directory, size_t index);
-EnvironmentSettings parseEnvironment(const Object& object, const fs::path& directory);
+void parseBillboardGroup(const Object& object, Scene& scene, const Files& files, size_t index);
+EnvironmentSettings parseEnvironment(const Object& object, const Files& files);
 RenderSettings parseRender(const Object& object);
 std::optional<RenderSettings::CameraExposure> parseCameraExposure(const Object& object);
 PostOverrides parsePost(const Object& object);

@@ -138,7 +138,7 @@ void applyModelMaterials(const Object& object, Scene& model)
                 object.fail("materials", fmt::format("has '{}', but the model has {} materials", name, model.materials.size()));
         } else {
             const auto it = std::find_if(model.materials.begin(), model.materials.end(),
-                                         [&](const Material& m) { return m.name == name; });
+                                         [&name = name](const Material& m) { return m.name == name; }); // clang 14: no structured binding captures
             if (it == model.materials.end()) {
                 std::string names;
                 for (size_t i = 0; i < model.materials.size(); ++i)
@@ -198,16 +198,16 @@ void parseShape(const Object& object, Scene& scene, size_t index)
     applyShadowFlags(object, scene, firstNode);
 }
 
-void parseModel(const Object& object, Scene& scene, const fs::path& directory)
+void parseModel(const Object& object, Scene& scene, const Files& files)
 {
     object.required("path");
     const std::string file = *object.string("path");
     if (file.empty()) object.fail("path", "must not be empty");
-    const fs::path path = fs::path(file).is_absolute() ? fs::path(file) : directory / file;
+    const fs::path path = files.resolve(object, "path", file);
     const glm::mat4 transform = parseTransform(object);
     Scene model;
     try {
-        model = loadGltf(path);
+        model = loadGltf(path, files.options);
     } catch (const Error& e) {
         // loadGltf names the model file; this adds which entry of the scene file asked for it.
         object.fail(object.where() + ": " + e.what());

@@ -156,7 +156,7 @@ const std::vector<std::string_view> kBillboardKeys = {"position", "scale", "tint
 
 /// A billboard group: its own sprite, kind, size and alpha mode, and billboards given one by one
 /// ("position", "billboards") and/or scattered at random in a box ("scatter").
-void parseBillboardGroup(const Object& object, Scene& scene, const fs::path& directory, size_t index)
+void parseBillboardGroup(const Object& object, Scene& scene, const Files& files, size_t index)
 {
     BillboardGroup group;
     group.name = object.string("name").value_or(fmt::format("billboards{}", index));
@@ -171,7 +171,7 @@ void parseBillboardGroup(const Object& object, Scene& scene, const fs::path& dir
     group.sprite = sprite == "tree" ? BuiltinSprite::Tree : sprite == "bar" ? BuiltinSprite::Bar : BuiltinSprite::Disc;
     if (const auto file = object.string("image")) {
         if (file->empty()) object.fail("image", "must not be empty");
-        const fs::path path = fs::path(*file).is_absolute() ? fs::path(*file) : directory / *file;
+        const fs::path path = files.resolve(object, "image", *file);
         ImageRGBA8 decoded;
         try {
             decoded = readPng(path);
@@ -257,14 +257,14 @@ void parseBillboardGroup(const Object& object, Scene& scene, const fs::path& dir
     scene.billboards.push_back(std::move(group));
 }
 
-EnvironmentSettings parseEnvironment(const Object& object, const fs::path& directory)
+EnvironmentSettings parseEnvironment(const Object& object, const Files& files)
 {
     EnvironmentSettings environment;
     object.notBoth("color", "file");
     environment.color = object.color("color");
     if (const auto file = object.string("file")) {
         if (file->empty()) object.fail("file", "must not be empty");
-        const fs::path path = fs::path(*file).is_absolute() ? fs::path(*file) : directory / *file;
+        const fs::path path = files.resolve(object, "file", *file);
         const std::string extension = lowercase(path.extension().string());
         if (extension != ".hdr" && extension != ".exr") object.fail("file", "must be a .hdr or .exr image");
         std::error_code ec;

@@ -13,10 +13,10 @@
 
 namespace specula::setup {
 
-scene::SceneDocument loadSceneOrBuiltin(const std::string& name)
+scene::SceneDocument loadSceneOrBuiltin(const std::string& name, const scene::LoadOptions& options)
 {
     if (std::optional<scene::SceneDocument> builtin = scene::builtinScene(name)) return std::move(*builtin);
-    return scene::loadScene(name);
+    return scene::loadScene(name, options);
 }
 
 namespace {
@@ -133,7 +133,10 @@ render::FrameSettings resolveSettings(const scene::SceneDocument& document, cons
     }
     s.environment.intensity = options.envIntensity.value_or(document.environment.intensity);
     s.environment.rotationDegrees = options.envRotation.value_or(document.environment.rotationDegrees);
-    if (s.environment.intensity < 0.0f) throw Error("--env-intensity must not be negative");
+    if (!(s.environment.intensity >= 0.0f) || !std::isfinite(s.environment.intensity))
+        throw Error("--env-intensity must be a finite number, not negative");
+    if (!std::isfinite(s.environment.rotationDegrees)) throw Error("--env-rotation must be a finite number");
+    if (!std::isfinite(s.exposureEv)) throw Error("--exposure must be a finite number");
     if (options.skybox) {
         const std::string& sky = *options.skybox;
         float blur = 0.0f;
@@ -171,7 +174,10 @@ glm::vec3 parseColor(const std::string& text)
 {
     glm::vec3 c;
     char extra = 0;
-    if (std::sscanf(text.c_str(), "%f,%f,%f%c", &c.x, &c.y, &c.z, &extra) != 3 || glm::any(glm::lessThan(c, glm::vec3(0.0f))))
+    // sscanf reads "nan" and "inf" too; !(c >= 0) and isfinite reject them.
+    if (std::sscanf(text.c_str(), "%f,%f,%f%c", &c.x, &c.y, &c.z, &extra) != 3 ||
+        !glm::all(glm::greaterThanEqual(c, glm::vec3(0.0f))) ||
+        !(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z)))
         throw Error("--env-color wants three non-negative numbers R,G,B (got '{}')", text);
     return c;
 }

@@ -42,10 +42,13 @@ struct FrameOptions {
     std::optional<float> ev100; ///< physical camera exposure (--ev100)
     std::optional<std::string> shadowQuality; ///< low | medium | high (--shadow-quality)
     std::optional<std::string> shadowFilter;  ///< hard | pcf | pcss (--shadow-filter)
+    /// Which files a scene may name and what it may allocate (--allow-external-files,
+    /// --max-buffer-bytes, --max-accessor-count, --max-image-size, --max-texture-memory).
+    scene::LoadOptions load;
 };
 
 /// `name` is a .gltf/.glb/.json path, or a built-in scene (scene/BuiltinScenes.h); empty = demo.
-scene::SceneDocument loadSceneOrBuiltin(const std::string& name);
+scene::SceneDocument loadSceneOrBuiltin(const std::string& name, const scene::LoadOptions& options = {});
 
 /// Settings from the scene document overridden by the options. Throws Error on bad values.
 render::FrameSettings resolveSettings(const scene::SceneDocument& document, const FrameOptions& options);

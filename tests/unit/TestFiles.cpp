@@ -55,14 +55,14 @@ std::string readFile(const fs::path& path)
 scene::SceneDocument loadSceneText(std::string_view json)
 {
     const TempDir dir("scene-text");
-    return scene::loadSceneFile(dir.write("scene.json", json));
+    return scene::loadSceneFile(dir.write("scene.json", json), kAllowExternal);
 }
 
 std::string sceneError(std::string_view json)
 {
     const TempDir dir("scene-text");
     const fs::path path = dir.write("scene.json", json);
-    std::string message = errorOf([&] { scene::loadSceneFile(path); });
+    std::string message = errorOf([&] { scene::loadSceneFile(path, kAllowExternal); });
     if (message.starts_with(path.string())) message.replace(0, path.string().size(), "scene.json");
     return message;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/Error.h"
+#include "scene/LoadOptions.h"
 
 namespace specula::scene {
 struct SceneDocument;
@@ -58,6 +59,10 @@ std::string errorOf(F&& f)
     ADD_FAILURE() << "no error thrown";
     return {};
 }
+
+/// Scene files in a scratch directory that name the shared assets: outside their folder, so
+/// loaded with --allow-external-files (the confinement itself: tests/cli/test_cli_limits.cpp).
+inline const scene::LoadOptions kAllowExternal{.allowExternalFiles = true};
 
 /// The document of a scene file holding `json` (written to a scratch directory, removed after).
 scene::SceneDocument loadSceneText(std::string_view json);

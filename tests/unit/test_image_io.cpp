@@ -337,3 +337,51 @@ TEST(ImageIo, ReadsModelTextures)
         EXPECT_EQ(image.pixels.size(), size_t(image.width) * size_t(image.height) * 4);
     }
 }
+
+// -- hostile headers (issue 16) -----------------------------------------------------------------
+
+namespace {
+
+/// Offset of the 4-byte size of attribute `name` in an OpenEXR file's header.
+size_t exrAttributeSize(const std::string& bytes, const std::string& name)
+{
+    const size_t at = bytes.find(name + std::string(1, '\0'));
+    EXPECT_NE(at, std::string::npos) << name;
+    const size_t type = at + name.size() + 1;
+    return bytes.find('\0', type) + 1;
+}
+
+} // namespace
+
+TEST(ImageIo, ExrAttributeSizeBeyondTheFileIsAnError)
+{
+    // OpenEXR allocates an attribute's declared size before reading it: 2 GiB from a file of
+    // a few hundred bytes was an out-of-memory kill (found by an earlier fuzzing attempt on
+    // issue 16). Checked first now.
+    TempDir dir;
+    writeExr(dir / "a.exr", testPatternFloat(4, 3));
+    std::string bytes = readFile(dir / "a.exr");
+    const int32_t huge = 0x7fffffff;
+    bytes.replace(exrAttributeSize(bytes, "channels"), 4, reinterpret_cast<const char*>(&huge), 4);
+    const std::string message = errorOf([&] { readFloatImage(dir.write("huge.exr", bytes)); });
+    EXPECT_NE(message.find("attribute channels declares 2147483647 bytes, more than the file holds"), std::string::npos) << message;
+}
+
+TEST(ImageIo, ExrDataWindowOverTheLimitIsAnError)
+{
+    // OpenEXR sizes its table of line offsets from the data window before reading pixels.
+    TempDir dir;
+    writeExr(dir / "a.exr", testPatternFloat(4, 3));
+    std::string bytes = readFile(dir / "a.exr");
+    const int32_t window[4] = {0, 0, 1 << 30, 1 << 30};
+    bytes.replace(exrAttributeSize(bytes, "dataWindow") + 4, 16, reinterpret_cast<const char*>(window), 16);
+    const std::string message = errorOf([&] { readFloatImage(dir.write("window.exr", bytes)); });
+    EXPECT_NE(message.find("unsupported image size"), std::string::npos) << message;
+}
+
+TEST(ImageIo, EmptyAndTinyInputsAreErrors)
+{
+    // An empty vector's data() is null: stb_image's read callback passed it to memcpy (UBSan).
+    for (const std::string& bytes : {std::string(), std::string("#?RADIANCE\n"), std::string("v/1\x01", 4)})
+        errorOf([&] { decodeFloatImage(std::vector<char>(bytes.begin(), bytes.end()), "x.hdr"); });
+}

@@ -61,7 +61,7 @@ TEST(SceneFile, ParsesEveryField)
 {
     TempDir dir;
     const fs::path path = dir.write("full.json", kFullScene);
-    const SceneDocument document = loadSceneFile(path);
+    const SceneDocument document = loadSceneFile(path, test::kAllowExternal);
     const Scene& scene = document.scene;
     EXPECT_EQ(document.source, path);
     EXPECT_EQ(scene.name, "full");
@@ -222,7 +222,7 @@ TEST(SceneFile, LoadsModelByAbsolutePath)
 {
     TempDir dir;
     const SceneDocument document = loadSceneFile(dir.write(
-        "m.json", R"({"models": [{"path": ")" + kBox.string() + R"(", "name": "box", "translation": [10, 0, 0], "scale": 2}]})"));
+        "m.json", R"({"models": [{"path": ")" + kBox.string() + R"(", "name": "box", "translation": [10, 0, 0], "scale": 2}]})"), test::kAllowExternal);
     const Scene& scene = document.scene;
     ASSERT_FALSE(scene.meshes.empty());
     ASSERT_EQ(scene.roots.size(), 1u);
@@ -239,7 +239,7 @@ TEST(SceneFile, LoadsModelByRelativePath)
     const fs::path relative = fs::relative(kBox, dir.path());
     ASSERT_TRUE(relative.is_relative());
     const SceneDocument document =
-        loadSceneFile(dir.write("m.json", R"({"models": [{"path": ")" + relative.string() + R"("}]})"));
+        loadSceneFile(dir.write("m.json", R"({"models": [{"path": ")" + relative.string() + R"("}]})"), test::kAllowExternal);
     EXPECT_FALSE(document.scene.meshes.empty());
     expectVec3(document.scene.worldBounds().max, glm::vec3(0.5f));
 }
@@ -441,7 +441,7 @@ TEST(SceneFile, DocumentedExampleLoads)
 
     TempDir dir;
     fs::create_directory_symlink(fs::absolute(SPECULA_ASSETS_DIR), dir / "assets");
-    const SceneDocument document = loadSceneFile(dir.write("example.json", doc.substr(begin + 8, end - begin - 8)));
+    const SceneDocument document = loadSceneFile(dir.write("example.json", doc.substr(begin + 8, end - begin - 8)), test::kAllowExternal);
     const Scene& scene = document.scene;
     EXPECT_EQ(scene.lights.size(), 3u);
     EXPECT_EQ(scene.cameras.size(), 1u);

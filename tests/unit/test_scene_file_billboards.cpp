@@ -222,7 +222,7 @@ TEST(SceneFileBillboards, DocumentedExampleHasBillboards)
     const size_t end = doc.find("```", begin + 8);
     TempDir dir;
     fs::create_directory_symlink(fs::absolute(SPECULA_ASSETS_DIR), dir / "assets");
-    const Scene s = loadSceneFile(dir.write("example.json", doc.substr(begin + 8, end - begin - 8))).scene;
+    const Scene s = loadSceneFile(dir.write("example.json", doc.substr(begin + 8, end - begin - 8)), test::kAllowExternal).scene;
     ASSERT_EQ(s.billboards.size(), 2u);
     EXPECT_EQ(s.billboards[0].kind, BillboardKind::AxisAligned);
     EXPECT_EQ(s.billboards[0].billboards.size(), 40u);

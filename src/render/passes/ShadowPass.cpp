@@ -444,7 +444,9 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
     static constexpr std::pair<int, const char*> kPasses[] = {{SPECULA_SHADOW_DIRECTIONAL, "shadows: cascades"},
                                                               {SPECULA_SHADOW_SPOT, "shadows: spot"},
                                                               {SPECULA_SHADOW_POINT, "shadows: point"}};
-    for (const auto& [kind, name] : kPasses) {
+    for (const auto& pass : kPasses) {
+        const int kind = pass.first; // not a structured binding: clang 14 cannot capture one
+        const char* name = pass.second;
         const bool any = std::any_of(r.planned.begin(), r.planned.end(), [kind](const PlannedLight& l) {
             return l.kind == kind && std::any_of(l.views.begin(), l.views.end(), [](const PlannedView& v) { return v.render; });
         });

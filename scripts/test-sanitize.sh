@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# The whole test suite on the sanitizer build (make test-sanitize): any AddressSanitizer,
+# LeakSanitizer or UndefinedBehaviorSanitizer report fails the test it happens in, in the test
+# binaries and in every specula process the CLI tests start (they inherit these settings).
+# Suppressions (scripts/sanitizers/) cover third-party code only, each with its reason.
+set -euo pipefail
+BUILD="${1:-build-sanitize}"
+SUPP="$(cd "$(dirname "$0")" && pwd)/sanitizers"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:check_initialization_order=1:detect_stack_use_after_return=1"
+export LSAN_OPTIONS="suppressions=$SUPP/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$SUPP/ubsan.supp"
+exec bash "$(dirname "$0")/test.sh" "$BUILD"
