@@ -178,6 +178,7 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         return 0;
     }
     if (a == "remove-light") { viewer.removeLight(w.integer(1)); return 0; }
+    if (a == "scatter-lights") { viewer.scatterLights(w.integer(1)); return 0; }
     if (a.starts_with("light-")) {
         const int i = w.integer(1);
         render::PlacedLight l = lightAt(viewer, i);

@@ -4,8 +4,8 @@
 // it projects into a light's shadow view instead of the camera's.
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
+#include "../common/frame_block.glsl"
 
-layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
 #if defined(SHADING_GOURAUD)
 // The lights are read through a buffer texture (lights/light_list.glsl), which every stage
 // may sample (vertex shaders are promised no storage blocks: GL 4.5's minimum is 0).

@@ -9,6 +9,7 @@
 #include "gl/Info.h"
 #include "gl/TimerQuery.h"
 #include "shading/CameraExposure.h"
+#include "shading/LightClusters.h"
 #include "render/FrameContext.h"
 #include "render/GpuScene.h"
 #include "render/graph/GlGraphBackend.h"
@@ -145,6 +146,10 @@ struct Renderer::Impl {
         f.exposure = glm::vec4(exposure, s.reinhardWhite, 0.0f, 0.0f);
         f.ambient = glm::vec4(s.ambient, 0.0f);
         f.options = glm::uvec4(tonemapId(s.tonemap), uint32_t(stores.lights.count()), 0u, 0u);
+        const ClusterGrid grid = ClusterGrid::make(s.width, s.height, view.projection);
+        f.clusterGrid = glm::uvec4(uint32_t(grid.tilesX), uint32_t(grid.tilesY), uint32_t(grid.slices),
+                                   uint32_t(grid.tileWidth) | uint32_t(grid.tileHeight) << 16);
+        f.clusterDepth = glm::vec4(grid.sliceScale(), grid.sliceBias(), float(s.width), float(s.height));
         stores.frame.upload();
         return exposure;
     }
@@ -241,6 +246,7 @@ void Renderer::render(const View& view, const FrameSettings& requested)
     r.checkSupport(settings);
     r.stats = {};
     r.stores.state.resetCounters();
+    r.stores.lights.setCutoff(std::max(settings.lightCutoff, 0.0f));
     const float exposure = r.uploadFrameData(view, settings);
     const FrameContext context{view, settings, settings.width, settings.height, settings.msaa, exposure,
                                r.stores, r.backend, r.stats};
@@ -258,6 +264,20 @@ void Renderer::render(const View& view, const FrameSettings& requested)
     r.stats.drawCalls = r.stores.state.drawCalls();
     r.stats.transientTextures = r.backend.liveTextures();
     for (const GraphPassTiming& t : r.backend.timings()) r.stats.passes.push_back({t.name, t.timer->elapsedMs(), t.wallMs});
+    if (frame->outputs.clusters) {
+        const LightCullPass& culling = r.passes.lightCull;
+        const ClusterCounts counts = culling.counts();
+        FrameStats::Clusters& c = r.stats.clusters;
+        c.tilesX = culling.grid().tilesX;
+        c.tilesY = culling.grid().tilesY;
+        c.slices = culling.grid().slices;
+        c.lightsInView = int(counts.visible);
+        c.directional = int(counts.directional);
+        c.maxPerCluster = int(counts.longest);
+        c.entries = counts.entries;
+        c.meanPerCluster = double(counts.entries) / double(std::max(culling.grid().count(), 1));
+        c.bufferBytes = culling.capacityWords() * sizeof(uint32_t);
+    }
     r.last = std::move(frame);
     r.lastSettings = settings;
     r.lastExposureScale = exposure;
@@ -440,6 +460,11 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
         break;
     }
     }
+}
+
+void Renderer::setClusterShrinkForTesting(float fraction)
+{
+    mImpl->passes.lightCull.setShrinkForTesting(fraction);
 }
 
 // The lights (render/LightBuffer).

@@ -42,10 +42,14 @@ struct FrameOptions {
     std::optional<float> ev100; ///< physical camera exposure (--ev100)
     std::optional<std::string> shadowQuality; ///< low | medium | high (--shadow-quality)
     std::optional<std::string> shadowFilter;  ///< hard | pcf | pcss (--shadow-filter)
+    std::optional<std::string> lightCulling;  ///< clustered | none (--light-culling)
+    std::optional<float> lightCutoff;         ///< --light-cutoff
+    std::optional<int> lights;                ///< the many-lights scene's count (--lights)
 };
 
 /// `name` is a .gltf/.glb/.json path, or a built-in scene (scene/BuiltinScenes.h); empty = demo.
-scene::SceneDocument loadSceneOrBuiltin(const std::string& name);
+/// `lights`: the many-lights scene's count.
+scene::SceneDocument loadSceneOrBuiltin(const std::string& name, std::optional<int> lights = std::nullopt);
 
 /// Settings from the scene document overridden by the options. Throws Error on bad values.
 render::FrameSettings resolveSettings(const scene::SceneDocument& document, const FrameOptions& options);

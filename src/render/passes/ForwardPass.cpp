@@ -11,6 +11,7 @@
 #include "render/graph/GlGraphBackend.h"
 #include "render/passes/BillboardPass.h"
 #include "render/passes/DoomPass.h"
+#include "render/passes/LightCullPass.h"
 #include "render/passes/ShadowPass.h"
 #include "shaders/shared/Bindings.h"
 
@@ -87,7 +88,7 @@ struct ForwardPass::Impl {
         const ResolvedShading shading = resolveShading(s.materialOverride, s.brdfGeometry, features);
         const ForwardVariant variant =
             ForwardVariant::make(features, shading, s.debugView, iblOn(frame), s.energyCompensation, s.ssao.enabled, isDoomFrame(s),
-                                 shadows);
+                                 shadows, s.lightCulling == LightCulling::None);
         auto it = programs.find(variant.key);
         if (it != programs.end()) return it->second;
         ForwardProgram p;
@@ -144,7 +145,7 @@ FrameDrawLists ForwardPass::drawLists(const FrameContext& frame) const
 }
 
 void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const FrameDrawLists& lists, const Targets& targets,
-                        BillboardPass& billboards, DoomPass* doom, const ShadowPass* shadows)
+                        BillboardPass& billboards, DoomPass* doom, const ShadowPass* shadows, const LightCullPass* culling)
 {
     Impl& r = *mImpl;
     const bool indexed = isDoomFrame(frame.settings);
@@ -154,10 +155,11 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
         [&](FrameGraph::Builder& b) {
             if (targets.occlusion) b.read(targets.occlusion, Use::Sample);
             if (targets.shadows) b.read(targets.shadows, Use::Sample);
+            if (targets.clusters) b.read(targets.clusters, Use::Sample);
             b.write(targets.color, Use::ColorAttachment);
             b.write(targets.depth, Use::DepthAttachment);
         },
-        [&frame, &lists, &r, &billboards, doom, shadows, targets, indexed] {
+        [&frame, &lists, &r, &billboards, doom, shadows, culling, targets, indexed] {
             gl::State& state = frame.state();
             FrameStores& stores = frame.stores;
             const FrameSettings& settings = frame.settings;
@@ -188,6 +190,7 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
             }
             stores.lights.bind(state);
             if (targets.shadows && shadows) shadows->bind(state);
+            if (targets.clusters && culling) culling->bind(state);
             // Doom materials look their colours up in the tables, inline or for the colour-map pass.
             if (doom) doom->bindTables(state);
             if (!stores.scene) return;
