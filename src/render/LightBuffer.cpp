@@ -72,6 +72,8 @@ void LightBuffer::setAll(const std::vector<PlacedLight>& lights)
         throw Error("{} lights: a shader's storage block holds at most {} here (GL_MAX_SHADER_STORAGE_BLOCK_SIZE)", lights.size(), mMaxCount);
     mLights = lights;
     mShadowSlots.assign(mLights.size(), -1);
+    mDirectional = int(std::count_if(mLights.begin(), mLights.end(),
+                                     [](const PlacedLight& l) { return l.light.type == scene::Light::Type::Directional; }));
     size_t capacity = size_t(mCapacity);
     while (capacity < mLights.size()) capacity *= 2;
     capacity = std::min(capacity, std::max(size_t(mMaxCount), size_t(mCapacity))); // doubling never passes the limit
@@ -102,6 +104,8 @@ void LightBuffer::setCutoff(float cutoff)
 void LightBuffer::set(int index, const PlacedLight& light)
 {
     assert(index >= 0 && index < count());
+    const auto directional = [](const PlacedLight& l) { return l.light.type == scene::Light::Type::Directional ? 1 : 0; };
+    mDirectional += directional(light) - directional(mLights[size_t(index)]);
     mLights[size_t(index)] = light;
     const shared::GpuLight gpu = pack(light, mShadowSlots[size_t(index)], mCutoff);
     mBuffer.update(offsetOf(index), sizeof gpu, &gpu);

@@ -33,6 +33,8 @@ public:
     void set(int index, const PlacedLight& light);
 
     int count() const { return int(mLights.size()); }
+    /// How many of them are directional (every light cluster lists them: FrameData.clusterLists).
+    int directionalCount() const { return mDirectional; }
     /// How many lights the current buffer holds before it must be replaced.
     int capacity() const { return mCapacity; }
     /// The most lights the GL lets a shader reach, in a storage block and in a buffer texture.
@@ -72,6 +74,7 @@ private:
     int mCapacity = 0;
     int mMaxCount = 0;
     float mCutoff = kDefaultCutoff;
+    int mDirectional = 0;
     std::vector<PlacedLight> mLights;
     std::vector<int> mShadowSlots;
 };

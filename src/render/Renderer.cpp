@@ -150,6 +150,9 @@ struct Renderer::Impl {
         f.clusterGrid = glm::uvec4(uint32_t(grid.tilesX), uint32_t(grid.tilesY), uint32_t(grid.slices),
                                    uint32_t(grid.tileWidth) | uint32_t(grid.tileHeight) << 16);
         f.clusterDepth = glm::vec4(grid.sliceScale(), grid.sliceBias(), float(s.width), float(s.height));
+        // What the culling's header will say, known here: shading reads it as uniforms.
+        f.clusterLists = glm::uvec4(uint32_t(stores.lights.directionalCount()),
+                                    uint32_t(SPECULA_CLUSTER_HEADER_WORDS + 2 * grid.count()), 0u, 0u);
         stores.frame.upload();
         return exposure;
     }

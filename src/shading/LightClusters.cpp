@@ -36,29 +36,31 @@ ClusterGrid ClusterGrid::make(int width, int height, const glm::mat4& projection
     const glm::mat4 inverse = glm::inverse(projection);
     g.near = -unproject(inverse, {0.0f, 0.0f, -1.0f}).z;
     // The far plane, through w: an infinite projection puts it at w = 0.
-    const glm::vec4 far = inverse * glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
-    const float farDepth = far.w != 0.0f ? -far.z / far.w : std::numeric_limits<float>::infinity();
+    const glm::vec4 farPoint = inverse * glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
+    const float farDepth = farPoint.w != 0.0f ? -farPoint.z / farPoint.w : std::numeric_limits<float>::infinity();
     const float kMaxRatio = 1e6f; // an infinite (or absurd) far plane: slices stop here
-    g.logNear = std::max({g.near, 1e-4f, std::isfinite(farDepth) ? farDepth * 1e-6f : 0.0f});
-    g.far = std::isfinite(farDepth) && farDepth > g.logNear ? std::min(farDepth, g.logNear * kMaxRatio) : g.logNear * kMaxRatio;
+    const float kFirstSlice = 5.0f; // metres
+    const float far = std::isfinite(farDepth) && farDepth > 0.0f ? farDepth : kFirstSlice * kMaxRatio;
+    g.first = std::max({std::min(kFirstSlice, 0.1f * far), g.near, 1e-4f});
+    g.far = std::clamp(far, g.first * 1.001f, g.first * kMaxRatio);
     return g;
 }
 
 float ClusterGrid::sliceScale() const
 {
-    return float(slices) / std::log(far / logNear);
+    return float(slices - 1) / std::log(far / first);
 }
 
 float ClusterGrid::sliceBias() const
 {
-    return -std::log(logNear) * sliceScale();
+    return 1.0f - std::log(first) * sliceScale();
 }
 
 float ClusterGrid::sliceDepth(int k) const
 {
     if (k <= 0) return near;
     if (k >= slices) return far;
-    return logNear * std::pow(far / logNear, float(k) / float(slices));
+    return first * std::pow(far / first, float(k - 1) / float(slices - 1));
 }
 
 int ClusterGrid::clusterAt(glm::vec2 window, float depth) const

@@ -20,15 +20,19 @@ struct ClusterGrid {
     int tilesX = 1, tilesY = 1, slices = SPECULA_CLUSTER_SLICES;
     int tileWidth = 1, tileHeight = 1; ///< pixels
     float near = 0.1f, far = 100.0f;   ///< view depths (metres along -z) of the first and last slice's outer faces
-    float logNear = 0.1f;              ///< where the exponential spacing starts (near, unless near ≤ 0 as an orthographic view may have)
+    float first = 5.0f;                ///< where slice 1 begins: slice 0 is [near, first], the others exponential to far
 
-    /// ceil(width / 16) × ceil(height / 9)-pixel tiles (so at most 16 × 9 of them) and 24 slices
-    /// between the projection's near and far planes (an infinite far plane: 10⁶ × near).
+    /// ceil(width / 16) × ceil(height / 9)-pixel tiles (so at most 16 × 9 of them) and 24
+    /// slices: the first from the near plane to min(5 m, far / 10) (as Bevy's first_slice_depth:
+    /// nothing much is nearer, and exponential slices from a 0.1 m near plane would spend a
+    /// third of themselves on the first metre), the other 23 exponential from there to the far
+    /// plane (an infinite far plane: 10⁶ × that).
     static ClusterGrid make(int width, int height, const glm::mat4& projection);
 
     int count() const { return tilesX * tilesY * slices; }
     int index(int x, int y, int slice) const { return x + tilesX * (y + tilesY * slice); }
-    /// slice = floor(log(depth) × sliceScale() + sliceBias()), clamped to [0, slices): as the shaders find it.
+    /// slice = floor(log(depth) × sliceScale() + sliceBias()), clamped to [0, slices): as the
+    /// shaders find it (depths below `first` give slice 0).
     float sliceScale() const;
     float sliceBias() const;
     /// The view depth where slice k begins (k = slices: the far plane).

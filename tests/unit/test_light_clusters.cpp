@@ -47,13 +47,18 @@ TEST(LightClusters, GridAdaptsToTheTarget)
         EXPECT_GE(g.tilesY * g.tileHeight, h);
         EXPECT_LT((g.tilesY - 1) * g.tileHeight, h) << "no empty tile row";
     }
-    // Slices: exponential from near to far, and a depth's slice is the one that spans it.
-    for (int k = 0; k < hd.slices; ++k) {
+    // Slices: the first from near to 5 m, then exponential to far, and a depth's slice is the
+    // one that spans it.
+    EXPECT_FLOAT_EQ(hd.sliceDepth(1), 5.0f);
+    EXPECT_EQ(hd.clusterAt({0.5f, 0.5f}, 0.2f), hd.index(0, 0, 0));
+    EXPECT_EQ(hd.clusterAt({0.5f, 0.5f}, 4.9f), hd.index(0, 0, 0));
+    for (int k = 1; k < hd.slices; ++k) {
         EXPECT_LT(hd.sliceDepth(k), hd.sliceDepth(k + 1));
         const float middle = std::sqrt(hd.sliceDepth(k) * hd.sliceDepth(k + 1));
         EXPECT_EQ(hd.clusterAt({0.5f, 0.5f}, middle), hd.index(0, 0, k)) << "slice " << k;
     }
-    EXPECT_NEAR(hd.sliceDepth(12), std::sqrt(0.1f * 100.0f), 1e-3f);
+    EXPECT_NEAR(hd.sliceDepth(12), 5.0f * std::pow(20.0f, 11.0f / 23.0f), 1e-3f);
+    EXPECT_NEAR(ClusterGrid::make(64, 64, glm::perspective(1.0f, 1.0f, 0.1f, 10.0f)).first, 1.0f, 1e-4f) << "far / 10 when nearer";
 }
 
 // Every point of the view lies in the box of the cluster the shaders find for it.
