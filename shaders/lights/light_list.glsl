@@ -52,7 +52,8 @@ uint frameLightCount()
 
 // The lights that may reach a shading point: light indices lightListIndex(list, 0 .. count-1).
 // Entries [0, directional) are the directional lights, listed from word `base`; the others
-// are the cluster's, from word `first` + k. `direct`: every light, entry k is light k.
+// are the cluster's, from word `first` + k. `direct`: every light, entry k is light k (only the
+// vertex stage, SPECULA_VERTEX_STAGE, has such lists besides LIGHTS_ALL: a vertex outside the view).
 struct LightList {
     uint first;
     uint count;
@@ -84,8 +85,7 @@ LightList clusterList(uint cluster)
 uint clusterIndex(vec2 window, float depth)
 {
     uvec4 grid = frame.clusterGrid;
-    uvec2 tileSize = uvec2(grid.w & 0xffffu, grid.w >> 16);
-    uvec2 tile = min(uvec2(max(window, vec2(0.0))) / tileSize, grid.xy - 1u);
+    uvec2 tile = min(uvec2(max(window, vec2(0.0)) * frame.clusterTiles.xy), grid.xy - 1u);
     float s = floor(log(max(depth, 1e-6)) * frame.clusterDepth.x + frame.clusterDepth.y);
     uint slice = uint(clamp(s, 0.0, float(grid.z - 1u)));
     return tile.x + grid.x * (tile.y + grid.y * slice);
@@ -123,7 +123,9 @@ LightList lightList(vec3 worldPosition)
 uint lightListIndex(LightList list, uint k)
 {
 #ifdef SPECULA_CLUSTERED_LIGHTS
+#ifdef SPECULA_VERTEX_STAGE
     if (list.direct) return k;
+#endif
     return texelFetch(clusterWords, int(k < list.directional ? list.base + k : list.first + k)).x;
 #else
     return k;

@@ -25,10 +25,11 @@ struct FrameData {
     uvec4 clusterGrid;     // x tiles across, y tiles up, z depth slices, w tile width | tile height << 16 (pixels)
     vec4 clusterDepth;     // slice = floor(log(view depth) * x + y); zw = the target's width and height
     uvec4 clusterLists;    // x directional lights (every cluster's), y the word their list starts at (ClusterData.h)
+    vec4 clusterTiles;     // xy 1 / tile width and height (pixels): a multiply, not a vector integer division
 };
 
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::FrameData) == 3 * 64 + 7 * 16);
+static_assert(sizeof(specula::shared::FrameData) == 3 * 64 + 8 * 16);
 #endif

@@ -153,6 +153,7 @@ struct Renderer::Impl {
         // What the culling's header will say, known here: shading reads it as uniforms.
         f.clusterLists = glm::uvec4(uint32_t(stores.lights.directionalCount()),
                                     uint32_t(SPECULA_CLUSTER_HEADER_WORDS + 2 * grid.count()), 0u, 0u);
+        f.clusterTiles = glm::vec4(1.0f / float(grid.tileWidth), 1.0f / float(grid.tileHeight), 0.0f, 0.0f);
         stores.frame.upload();
         return exposure;
     }

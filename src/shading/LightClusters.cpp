@@ -65,8 +65,9 @@ float ClusterGrid::sliceDepth(int k) const
 
 int ClusterGrid::clusterAt(glm::vec2 window, float depth) const
 {
-    const int x = std::clamp(int(window.x) / tileWidth, 0, tilesX - 1);
-    const int y = std::clamp(int(window.y) / tileHeight, 0, tilesY - 1);
+    // As the shaders: a multiply by the inverse tile size (the boxes' padding covers its rounding).
+    const int x = std::clamp(int(std::max(window.x, 0.0f) * (1.0f / float(tileWidth))), 0, tilesX - 1);
+    const int y = std::clamp(int(std::max(window.y, 0.0f) * (1.0f / float(tileHeight))), 0, tilesY - 1);
     const float s = std::floor(std::log(std::max(depth, 1e-6f)) * sliceScale() + sliceBias());
     const int slice = std::clamp(int(std::clamp(s, -1.0f, float(slices))), 0, slices - 1);
     return index(x, y, slice);
