@@ -281,6 +281,7 @@ void Renderer::render(const View& view, const FrameSettings& requested)
         c.entries = counts.entries;
         c.meanPerCluster = double(counts.entries) / double(std::max(culling.grid().count(), 1));
         c.bufferBytes = culling.capacityWords() * sizeof(uint32_t);
+        c.everyLight = frame->outputs.everyLight;
     }
     r.last = std::move(frame);
     r.lastSettings = settings;

@@ -383,6 +383,42 @@ TEST_F(GlTest, ZeroOneAndManyLightsCluster)
     }
 }
 
+// A few lights that reach the whole view: once a culling has listed every light in every
+// cluster, the next frames shade with every light (the same lights, no index each), and the
+// image is the same; when a light stops reaching everywhere, the lists come back.
+TEST_F(GlTest, EveryLightEverywhereShadesWithoutLists)
+{
+    const render::View view = testView(64.0f / 36.0f);
+    const render::FrameSettings settings = frameSettings(64, 36);
+    render::Renderer renderer;
+    renderer.setScene(testScene());
+    std::vector<render::PlacedLight> lights;
+    for (int i = 0; i < 4; ++i) {
+        render::PlacedLight p;
+        p.light.type = scene::Light::Type::Point;
+        p.light.intensity = 30.0f;
+        p.position = {-6.0f + 4.0f * float(i), 4.0f, 2.0f}; // no range: 100 m from the cutoff, the whole view
+        lights.push_back(p);
+    }
+    renderer.setLights(lights);
+    const ImageFloat brute = renderWith(renderer, view, settings, render::LightCulling::None);
+    const ImageFloat first = renderWith(renderer, view, settings, render::LightCulling::Clustered);
+    EXPECT_FALSE(renderer.stats().clusters.everyLight) << "the first frame has no culling before it";
+    const ImageFloat second = renderWith(renderer, view, settings, render::LightCulling::Clustered);
+    EXPECT_TRUE(renderer.stats().clusters.everyLight);
+    EXPECT_EQ(renderer.stats().clusters.entries, size_t(4 * renderer.stats().clusters.tilesX * renderer.stats().clusters.tilesY *
+                                                        renderer.stats().clusters.slices));
+    EXPECT_EQ(compare(first, brute).differing, 0);
+    EXPECT_EQ(compare(second, brute).differing, 0);
+    // One light now reaches only part of the view: the lists again.
+    lights[0].light.range = 3.0f;
+    renderer.setLights(lights);
+    renderWith(renderer, view, settings, render::LightCulling::Clustered);
+    const ImageFloat back = renderWith(renderer, view, settings, render::LightCulling::Clustered);
+    EXPECT_FALSE(renderer.stats().clusters.everyLight);
+    EXPECT_EQ(compare(back, renderWith(renderer, view, settings, render::LightCulling::None)).differing, 0);
+}
+
 // A light without a range ends where its illuminance falls to cutoff × its illuminance at
 // 1 m; the error that makes (against the infinite light) is below cutoff × that illuminance at
 // every pixel, and not nothing (the cutoff does cut).

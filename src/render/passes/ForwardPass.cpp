@@ -81,6 +81,7 @@ struct ForwardPass::Impl {
     std::vector<DrawProgram> materialPrograms;   // this frame's, by material
     SkyboxPass skybox;
     ShadowVariant shadows;                       // this frame's SHADOWS variants
+    bool allLights = false;                      // this frame's LIGHTS_ALL
 
     ForwardProgram& program(const FrameContext& frame, uint32_t features)
     {
@@ -88,7 +89,7 @@ struct ForwardPass::Impl {
         const ResolvedShading shading = resolveShading(s.materialOverride, s.brdfGeometry, features);
         const ForwardVariant variant =
             ForwardVariant::make(features, shading, s.debugView, iblOn(frame), s.energyCompensation, s.ssao.enabled, isDoomFrame(s),
-                                 shadows, s.lightCulling == LightCulling::None);
+                                 shadows, allLights);
         auto it = programs.find(variant.key);
         if (it != programs.end()) return it->second;
         ForwardProgram p;
@@ -117,10 +118,11 @@ bool ForwardPass::anyDoomMaterial(const FrameContext& frame)
     });
 }
 
-const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows)
+const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows, bool allLights)
 {
     Impl& r = *mImpl;
     r.shadows = shadows;
+    r.allLights = allLights;
     r.materialPrograms.clear();
     r.skybox.prepare();
     const GpuScene* scene = frame.stores.scene.get();

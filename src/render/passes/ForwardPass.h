@@ -41,8 +41,10 @@ public:
     ForwardPass& operator=(const ForwardPass&) = delete;
 
     /// Each material's program for this frame (compiled on first use), and the DFG table it
-    /// reads, baked on first use. `shadows`: what the frame's shadow maps ask (SHADOWS variants).
-    const std::vector<DrawProgram>& prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows = {});
+    /// reads, baked on first use. `shadows`: what the frame's shadow maps ask (SHADOWS variants);
+    /// `allLights`: every light at every point (LIGHTS_ALL), not the cluster lists.
+    const std::vector<DrawProgram>& prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows = {},
+                                                     bool allLights = false);
     /// The draw lists of the frame's view, sorted with prepareMaterials' programs.
     FrameDrawLists drawLists(const FrameContext& frame) const;
 

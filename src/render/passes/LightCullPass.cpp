@@ -48,6 +48,7 @@ struct LightCullPass::Impl {
     std::vector<shared::ClusterBounds> bounds;
     float shrink = 0.0f;
     ClusterCounts last;
+    bool haveCounts = false;
 
     void ensurePrograms()
     {
@@ -156,6 +157,7 @@ struct LightCullPass::Impl {
         fill.set(fillClusters, uint32_t(grid.count()));
         state.dispatchCompute(groups(uint32_t(grid.count()), SPECULA_CULL_GROUP), 1);
         last = c;
+        haveCounts = true;
         // The shading passes fetch the lists next: the frame graph places that barrier.
     }
 };
@@ -195,6 +197,13 @@ const std::vector<shared::ClusterBounds>& LightCullPass::bounds() const
 ClusterCounts LightCullPass::counts() const
 {
     return mImpl->last;
+}
+
+bool LightCullPass::listedEveryLight(int pointAndSpotLights) const
+{
+    const Impl& r = *mImpl;
+    return r.haveCounts && pointAndSpotLights >= 0 && r.last.visible == uint32_t(pointAndSpotLights) &&
+           uint64_t(r.last.entries) == uint64_t(r.grid.count()) * uint64_t(r.last.visible);
 }
 
 size_t LightCullPass::capacityWords() const

@@ -53,6 +53,11 @@ public:
     const ClusterGrid& grid() const;
     const std::vector<shared::ClusterBounds>& bounds() const;
     ClusterCounts counts() const;
+    /// Whether the last culling listed every one of `pointAndSpotLights` in every cluster: then
+    /// the lists are the whole light set, and shading with every light (LIGHTS_ALL) evaluates
+    /// exactly the same lights, without an index per light. (The next culling says whether
+    /// that still holds; every light is always a superset of a cluster's list, never wrong.)
+    bool listedEveryLight(int pointAndSpotLights) const;
     /// Words the lists' buffer holds (header, records, indices).
     size_t capacityWords() const;
     /// The lists' buffer as the last frame left it (tests).

@@ -109,11 +109,19 @@ void buildDoom(Frame& f, FramePasses& passes, const FrameContext& frame)
 void buildFrame(Frame& f, FramePasses& passes, const FrameContext& frame)
 {
     // The lights each cluster lists, for every shading path; a Doom frame shades with none.
-    if (!isDoomFrame(frame.settings) && frame.settings.lightCulling == LightCulling::Clustered)
-        f.outputs.clusters = passes.lightCull.addTo(f.graph, frame);
+    const bool culled = !isDoomFrame(frame.settings) && frame.settings.lightCulling == LightCulling::Clustered;
+    // When the last culling listed every light in every cluster (a few lights that reach the
+    // whole view), the lists are every light: shade with every light, as the same lights
+    // without an index each (LightCullPass::listedEveryLight). The culling still runs, to say
+    // when that stops holding.
+    const LightBuffer& lights = frame.stores.lights;
+    const bool everyLight = frame.settings.lightCulling == LightCulling::None ||
+                            (culled && passes.lightCull.listedEveryLight(lights.count() - lights.directionalCount()));
+    if (culled) f.outputs.clusters = passes.lightCull.addTo(f.graph, frame);
+    f.outputs.everyLight = everyLight;
     // Shadows first: whether any light has a map picks the forward programs.
     f.outputs.shadows = passes.shadows.addTo(f.graph, frame);
-    passes.forward.prepareMaterials(frame, passes.shadows.variant());
+    passes.forward.prepareMaterials(frame, passes.shadows.variant(), everyLight);
     f.lists = passes.forward.drawLists(frame);
     if (isDoomFrame(frame.settings)) {
         buildDoom(f, passes, frame);

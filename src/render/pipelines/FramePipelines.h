@@ -59,6 +59,7 @@ private:
 /// What a frame leaves to be read after it (the graph exports them).
 struct FrameOutputs {
     GraphBuffer clusters;   ///< the cluster light lists (imported), when the frame culled lights
+    bool everyLight = false; ///< the forward pass shades every light (LIGHTS_ALL)
     GraphTexture shadows;   ///< the shadow atlas (imported), when some light has a map
     GraphTexture ldr;       ///< the sRGB image (readImage, present)
     GraphTexture hdr;       ///< single-sampled radiance, when the frame made one
