@@ -151,8 +151,8 @@ struct FrameStats {
         double meanPerCluster = 0.0;
         size_t entries = 0;      ///< light indices of all the lists
         size_t bufferBytes = 0;  ///< the lists' buffer
-        /// The frame shaded with every light: the culling before it had listed every light in
-        /// every cluster, so the lists were the whole light set (the same lights, no index each).
+        /// The frame shaded with every light: the culling before it had listed nearly every one
+        /// of a few lights in nearly every cluster (render/passes/LightCullPass.h).
         bool everyLight = false;
     } clusters;
 };

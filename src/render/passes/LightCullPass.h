@@ -53,11 +53,14 @@ public:
     const ClusterGrid& grid() const;
     const std::vector<shared::ClusterBounds>& bounds() const;
     ClusterCounts counts() const;
-    /// Whether the last culling listed every one of `pointAndSpotLights` in every cluster: then
-    /// the lists are the whole light set, and shading with every light (LIGHTS_ALL) evaluates
-    /// exactly the same lights, without an index per light. (The next culling says whether
-    /// that still holds; every light is always a superset of a cluster's list, never wrong.)
-    bool listedEveryLight(int pointAndSpotLights) const;
+    /// Whether the next frame had better shade every light (LIGHTS_ALL) than read the lists:
+    /// the last culling listed nearly every one of `pointAndSpotLights` in nearly every cluster
+    /// (at least 90% of all cluster-light pairs) and they are few (at most 32). Then the lists
+    /// would save a few evaluations and cost an index fetch for every light of every pixel
+    /// (and per-pixel addresses where every pixel read the same light). Every light is a
+    /// superset of any list, so this is never wrong, only faster; the next culling says
+    /// whether it still holds.
+    bool listsAreNearlyEveryLight(int pointAndSpotLights) const;
     /// Words the lists' buffer holds (header, records, indices).
     size_t capacityWords() const;
     /// The lists' buffer as the last frame left it (tests).

@@ -110,13 +110,13 @@ void buildFrame(Frame& f, FramePasses& passes, const FrameContext& frame)
 {
     // The lights each cluster lists, for every shading path; a Doom frame shades with none.
     const bool culled = !isDoomFrame(frame.settings) && frame.settings.lightCulling == LightCulling::Clustered;
-    // When the last culling listed every light in every cluster (a few lights that reach the
-    // whole view), the lists are every light: shade with every light, as the same lights
-    // without an index each (LightCullPass::listedEveryLight). The culling still runs, to say
-    // when that stops holding.
+    // When the last culling listed nearly every light in nearly every cluster (a few lights
+    // that reach most of the view), shade with every light: a few more evaluations, no index
+    // each (LightCullPass::listsAreNearlyEveryLight). The culling still runs, to say when that
+    // stops holding.
     const LightBuffer& lights = frame.stores.lights;
     const bool everyLight = frame.settings.lightCulling == LightCulling::None ||
-                            (culled && passes.lightCull.listedEveryLight(lights.count() - lights.directionalCount()));
+                            (culled && passes.lightCull.listsAreNearlyEveryLight(lights.count() - lights.directionalCount()));
     if (culled) f.outputs.clusters = passes.lightCull.addTo(f.graph, frame);
     f.outputs.everyLight = everyLight;
     // Shadows first: whether any light has a map picks the forward programs.
