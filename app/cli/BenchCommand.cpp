@@ -55,6 +55,7 @@ int runBench(const BenchArgs& args)
     nlohmann::json results = nlohmann::json::array();
     std::string rendererName;
     std::vector<std::pair<std::string, std::vector<PassSummary>>> passTables;
+    std::vector<std::string> clusterLines;
     const double processStartMs = msSinceProcessStart();
     for (size_t i = 0; i < args.scenes.size(); ++i) {
         const std::string& name = args.scenes[i];
@@ -79,7 +80,7 @@ int runBench(const BenchArgs& args)
             Stopwatch startup;
             s.context = platform::Context::createHeadless({.debug = false});
             s.contextMs = startup.elapsedMs();
-            s.document = setup::loadSceneOrBuiltin(name, args.frame.load);
+            s.document = setup::loadSceneOrBuiltin(name, args.frame.load, args.frame.lights);
             s.settings = setup::resolveSettings(s.document, args.frame);
             const auto environment = setup::loadEnvironment(s.document, args.frame);
             s.environment = environment.has_value();
@@ -143,11 +144,14 @@ int runBench(const BenchArgs& args)
         }
         renderer.setPassWallClock(false);
         const std::vector<PassSummary> passMedians = passTimes.medians();
+        const render::FrameStats::Clusters clusters = renderer.stats().clusters;
         nlohmann::json passWallJson;
         for (const PassSummary& pass : passMedians) passWallJson[pass.name] = pass.wallMs;
-        passTables.emplace_back(fmt::format("{} ({}x{}x{}): time per pass, median of {} frames:", name, settings.width,
-                                            settings.height, settings.msaa, args.frames),
+        passTables.emplace_back(fmt::format("{} ({}x{}x{}, {} light{}): time per pass, median of {} frames:", name, settings.width,
+                                            settings.height, settings.msaa, renderer.lightCount(), renderer.lightCount() == 1 ? "" : "s",
+                                            args.frames),
                                 passMedians);
+        clusterLines.push_back(clusterStatsLine(clusters));
         const Summary cpuSummary = summarize(cpu), gpuSummary = summarize(gpu);
         nlohmann::json passJson;
         for (const auto& [pass, values] : passes) passJson[pass] = toJson(summarize(values));
@@ -169,7 +173,15 @@ int runBench(const BenchArgs& args)
                            {"frameGpuMs", toJson(gpuSummary)},
                            {"fps", 1000.0 / cpuSummary.median},
                            {"passesGpuMs", passJson},
-                           {"passesWallMedianMs", passWallJson}});
+                           {"passesWallMedianMs", passWallJson},
+                           {"lights", renderer.lightCount()},
+                           {"clusters",
+                            {{"grid", {clusters.tilesX, clusters.tilesY, clusters.slices}},
+                             {"lightsInView", clusters.lightsInView},
+                             {"directional", clusters.directional},
+                             {"maxPerCluster", clusters.maxPerCluster},
+                             {"meanPerCluster", clusters.meanPerCluster},
+                             {"entries", clusters.entries}}}});
         log::info("{}: start-up {:.0f} ms, frame median {:.2f} ms", name, startupMs, cpuSummary.median);
     }
     (void)processStartMs;
@@ -191,7 +203,10 @@ int runBench(const BenchArgs& args)
                     r["frameCpuMs"]["median"].get<double>(), spread.c_str(), r["frameGpuMs"]["median"].get<double>(),
                     r["fps"].get<double>());
     }
-    for (const auto& [title, medians] : passTables) printPassTable(title, medians);
+    for (size_t i = 0; i < passTables.size(); ++i) {
+        printPassTable(passTables[i].first, passTables[i].second);
+        if (!clusterLines[i].empty()) std::printf("%s\n", clusterLines[i].c_str());
+    }
     std::printf("wrote %s\n", args.output.c_str());
     return 0;
 }

@@ -40,7 +40,7 @@ void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
     command->add_option("--brdf-diffuse", frame.brdfDiffuse, "diffuse lobe: lambert (default), oren-nayar, burley");
     command->add_option("--shading", frame.shading, "every material's shading model: pbr, unlit, flat, gouraud, phong, blinn-phong, doom");
     command->add_option("--debug-view", frame.debugView,
-                        "show one buffer: base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, brdf-f, ssao, bloom, cascades, shadow-atlas");
+                        "show one buffer: base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, brdf-f, ssao, bloom, cascades, shadow-atlas, light-count");
     command->add_option("--camera", frame.camera, "index of the scene camera to use (default: the first, else framed)");
     command->add_flag("--no-default-lights", frame.noDefaultLights, "never add the default light rig");
     command->add_option("--env", frame.env, "environment: an equirectangular .hdr or .exr, sky (procedural, the default) or none");
@@ -53,6 +53,11 @@ void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
                         "multiple-scattering compensation of the specular lobe: on (default) or off (exactly the glTF BRDF)");
     command->add_flag("--no-cache", frame.noCache, "bake the environment even if the bake cache holds it, and do not cache");
     command->add_flag("--gizmos", frame.gizmos, "draw every light as a disc in the light's colour");
+    command->add_option("--light-culling", frame.lightCulling,
+                        "clustered (default: each pixel evaluates its cluster's lights) or none (every light everywhere)");
+    command->add_option("--light-cutoff", frame.lightCutoff,
+                        "lights without a range end where their illuminance falls to this fraction of it at 1 m (default 1e-4: 100 m; 0 = infinite)");
+    command->add_option("--lights", frame.lights, "the many-lights scene's number of point lights (default 1024)");
     addPostOptions(command, frame);
     addLoadOptions(command, frame.load);
 }
@@ -100,7 +105,7 @@ CommandLine::CommandLine()
     infoCommand = app.add_subcommand("info", "print the OpenGL vendor, renderer, version and limits");
 
     benchCommand = app.add_subcommand("bench", "measure start-up and frame times of built-in scenes");
-    benchCommand->add_option("--scene", bench.scenes, "scenes to measure (default: demo learnopengl learnopengl-ibl)");
+    benchCommand->add_option("--scene", bench.scenes, "scenes to measure (default: demo learnopengl learnopengl-ibl; also many-lights, doom, files)");
     benchCommand->add_option("-o,--output", bench.output, "JSON results file (default bench.json)");
     benchCommand->add_option("--frames", bench.frames, "frames to time per scene (default 60)");
     benchCommand->add_option("--warmup", bench.warmup, "untimed frames first (default 5)");

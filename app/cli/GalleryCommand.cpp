@@ -33,7 +33,7 @@ int runGallery(const GalleryArgs& args)
 {
     const std::filesystem::path output = args.output;
     checkOutputPath(output);
-    scene::SceneDocument document = setup::loadSceneOrBuiltin(args.scene, args.frame.load);
+    scene::SceneDocument document = setup::loadSceneOrBuiltin(args.scene, args.frame.load, args.frame.lights);
     setup::FrameOptions options = args.frame;
     // Tiles, not full frames: small by default.
     if (!options.width) options.width = 480;

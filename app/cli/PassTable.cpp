@@ -1,5 +1,7 @@
 #include "PassTable.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdio>
 
@@ -42,6 +44,15 @@ void printPassTable(const std::string& title, const std::vector<PassSummary>& me
         wall += pass.wallMs;
     }
     std::printf("  %-18s %9.2f %9.2f\n", "total", gpu, wall);
+}
+
+std::string clusterStatsLine(const render::FrameStats::Clusters& c)
+{
+    if (c.slices == 0) return {};
+    return fmt::format("light clusters {}x{}x{}: {} point/spot light{} in view, {} directional; per cluster max {}, mean {:.2f} "
+                       "({} entries, {:.1f} MiB buffer)",
+                       c.tilesX, c.tilesY, c.slices, c.lightsInView, c.lightsInView == 1 ? "" : "s", c.directional, c.maxPerCluster,
+                       c.meanPerCluster, c.entries, double(c.bufferBytes) / (1024.0 * 1024.0));
 }
 
 } // namespace specula::cli

@@ -30,4 +30,8 @@ private:
 /// Prints "pass  timer ms  wall ms" rows and their totals to stdout, under `title`.
 void printPassTable(const std::string& title, const std::vector<PassSummary>& medians);
 
+/// One line of the frame's light clusters (grid, lights in view, max and mean per cluster), or
+/// empty when the frame culled no lights.
+std::string clusterStatsLine(const render::FrameStats::Clusters& clusters);
+
 } // namespace specula::cli

@@ -21,7 +21,7 @@ int runRender(const RenderArgs& args)
     checkOutputPath(output); // before any long work
 
     Stopwatch load;
-    scene::SceneDocument document = setup::loadSceneOrBuiltin(args.scene, args.frame.load);
+    scene::SceneDocument document = setup::loadSceneOrBuiltin(args.scene, args.frame.load, args.frame.lights);
     const render::FrameSettings settings = setup::resolveSettings(document, args.frame);
     const std::optional<render::EnvironmentMap> environment = setup::loadEnvironment(document, args.frame);
     const render::BakeSettings bake = setup::resolveBakeSettings(args.frame);
@@ -94,6 +94,8 @@ int runRender(const RenderArgs& args)
         printPassTable(fmt::format("Time per pass, median of {} frames ({}x{}, {} sample{}):", kStatsFrames, settings.width,
                                    settings.height, samples, samples == 1 ? "" : "s"),
                        times.medians());
+        const std::string clusters = clusterStatsLine(renderer.stats().clusters);
+        if (!clusters.empty()) std::printf("%s\n", clusters.c_str());
     }
     if (debug.errorCount() > 0) {
         // GL errors are bugs: never pass one off as a good image.

@@ -49,7 +49,7 @@ void Viewer::loadScene(const std::string& name)
 {
     Stopwatch load;
     const bool first = mSceneName.empty();
-    scene::SceneDocument document = setup::loadSceneOrBuiltin(name, mOptions.load);
+    scene::SceneDocument document = setup::loadSceneOrBuiltin(name, mOptions.load, mOptions.lights);
     render::FrameSettings settings = setup::resolveSettings(document, mOptions);
     // The first scene brings its environment (or the command line's); a dropped scene keeps
     // the one on screen.
@@ -246,6 +246,39 @@ void Viewer::addLight(scene::Light::Type type)
     lights.push_back(placed);
     mRenderer->setLights(lights);
     selectedLight = int(lights.size()) - 1;
+}
+
+void Viewer::scatterLights(int count)
+{
+    if (count < 0 || count > (1 << 22)) throw Error("scatter-lights wants 0 to 4194304 lights (got {})", count);
+    std::vector<render::PlacedLight> lights = currentLights(*mRenderer);
+    const glm::vec3 target = mCamera.target();
+    const float side = 2.0f * mCamera.distance();
+    auto hash = [](uint32_t x) {
+        x ^= x >> 16;
+        x *= 0x7feb352du;
+        x ^= x >> 15;
+        x *= 0x846ca68bu;
+        x ^= x >> 16;
+        return float(x >> 8) / float(1u << 24);
+    };
+    const uint32_t first = uint32_t(lights.size());
+    for (int i = 0; i < count; ++i) {
+        const uint32_t k = (first + uint32_t(i)) * 4u;
+        render::PlacedLight placed;
+        placed.light.type = scene::Light::Type::Point;
+        placed.light.name = "scattered";
+        placed.light.range = 4.0f;
+        placed.light.intensity = 8.0f;
+        placed.light.castShadows = false;
+        const float hue = hash(k + 3u) * 6.0f;
+        placed.light.color = glm::clamp(glm::vec3(std::abs(hue - 3.0f) - 1.0f, 2.0f - std::abs(hue - 2.0f), 2.0f - std::abs(hue - 4.0f)),
+                                        0.0f, 1.0f) * 0.7f + 0.3f;
+        placed.position = target + glm::vec3((hash(k) - 0.5f) * side, 0.3f + 1.2f * hash(k + 1u), (hash(k + 2u) - 0.5f) * side);
+        placed.direction = {0.0f, -1.0f, 0.0f};
+        lights.push_back(placed);
+    }
+    mRenderer->setLights(lights);
 }
 
 void Viewer::removeLight(int index)

@@ -72,6 +72,9 @@ public:
 
     // Lights: add/remove rewrite the whole buffer, editing one light only its bytes.
     void addLight(scene::Light::Type type);
+    /// Adds `count` coloured point lights of range 4 m scattered (deterministically) over a
+    /// square around what the camera looks at, twice the camera's distance across.
+    void scatterLights(int count);
     void removeLight(int index);
     void editLight(int index, const render::PlacedLight& light);
     const LightUpload& lastLightUpload() const { return mLastLightUpload; }

@@ -180,6 +180,7 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         return 0;
     }
     if (a == "remove-light") { viewer.removeLight(w.integer(1)); return 0; }
+    if (a == "scatter-lights") { viewer.scatterLights(w.integer(1)); return 0; }
     if (a.starts_with("light-")) {
         const int i = w.integer(1);
         render::PlacedLight l = lightAt(viewer, i);
@@ -336,6 +337,9 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         std::string passes;
         for (const render::PassTiming& pass : stats.passes) passes += fmt::format(", {} {:.3f} ms", pass.name, pass.gpuMs);
         log::info("frame stats: {} draw calls, {} triangles{}", stats.drawCalls, stats.triangles, passes);
+        if (stats.clusters.slices > 0)
+            log::info("light clusters: {} lights in view, {} directional, per cluster max {}, mean {:.2f}", stats.clusters.lightsInView,
+                      stats.clusters.directional, stats.clusters.maxPerCluster, stats.clusters.meanPerCluster);
         return 0;
     }
     if (a == "reload-shaders") { viewer.reloadShaders(); return 0; }

@@ -11,6 +11,7 @@
 #include <ctime>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <variant>
@@ -84,6 +85,14 @@ void statisticsPanel(Viewer& viewer)
     ImGui::PlotLines("frame ms", viewer.frameTimes.data(), int(viewer.frameTimes.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 50));
     const render::FrameStats& stats = viewer.renderer().stats();
     ImGui::Text("%d draw calls, %zu triangles", stats.drawCalls, stats.triangles);
+    if (stats.clusters.slices > 0) {
+        const auto& c = stats.clusters;
+        ImGui::Text("light clusters %dx%dx%d: %d lights in view, %d directional", c.tilesX, c.tilesY, c.slices, c.lightsInView,
+                    c.directional);
+        ImGui::Text("  per cluster: max %d, mean %.2f (%zu entries)", c.maxPerCluster, c.meanPerCluster, c.entries);
+        for (const render::PassTiming& pass : stats.passes)
+            if (std::string_view(pass.name) == "light culling") ImGui::Text("  culling %.3f ms (GPU timing)", pass.gpuMs);
+    }
     if (stats.shadows.lights > 0 || stats.shadows.dropped > 0)
         ImGui::Text("shadows: %d lights, %d views (%d drawn, %d kept), %d left out", stats.shadows.lights, stats.shadows.views,
                     stats.shadows.rendered, stats.shadows.cached, stats.shadows.dropped);
@@ -133,8 +142,16 @@ void lightsPanel(Viewer& viewer)
     ImGui::SameLine();
     if (ImGui::Button("+ directional")) guarded(viewer, [&] { viewer.addLight(scene::Light::Type::Directional); });
     ImGui::Checkbox("gizmos", &viewer.settings().gizmos);
+    static int scatter = 1024;
+    ImGui::SetNextItemWidth(100.0f);
+    ImGui::InputInt("##scatter", &scatter, 256, 4096);
+    ImGui::SameLine();
+    if (ImGui::Button("scatter lights")) guarded(viewer, [&] { viewer.scatterLights(std::max(scatter, 0)); });
     static constexpr const char* kTypes[] = {"directional", "point", "spot"};
-    for (int i = 0; i < renderer.lightCount(); ++i) {
+    // Thousands of lights: the first 256 are listed (each a tree node), the rest counted.
+    constexpr int kListed = 256;
+    if (renderer.lightCount() > kListed) ImGui::Text("%d lights; the first %d:", renderer.lightCount(), kListed);
+    for (int i = 0; i < std::min(renderer.lightCount(), kListed); ++i) {
         const render::PlacedLight& l = renderer.light(i);
         const std::string label = std::to_string(i) + ": " + (l.light.name.empty() ? "light" : l.light.name) + " (" +
                                   kTypes[int(l.light.type)] + ")";
@@ -445,7 +462,7 @@ void postPanel(Viewer& viewer)
     }
     if (ImGui::BeginCombo("debug view", debugViewName(s.debugView))) {
         // Every view up to the last one (BrdfF), material inputs and BRDF terms included.
-        for (int k = 0; k <= int(DebugView::ShadowAtlas); ++k) {
+        for (int k = 0; k <= int(DebugView::LightCount); ++k) {
             const auto d = DebugView(k);
             if (ImGui::Selectable(debugViewName(d), d == s.debugView)) s.debugView = d;
         }

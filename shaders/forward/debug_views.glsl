@@ -7,7 +7,8 @@
 
 #if defined(DEBUG_VIEW_BASE_COLOR) || defined(DEBUG_VIEW_NORMAL) || defined(DEBUG_VIEW_ROUGHNESS) || \
     defined(DEBUG_VIEW_METALLIC) || defined(DEBUG_VIEW_OCCLUSION) || defined(DEBUG_VIEW_EMISSIVE) || \
-    defined(DEBUG_VIEW_BRDF_D) || defined(DEBUG_VIEW_BRDF_G) || defined(DEBUG_VIEW_BRDF_F) || defined(DEBUG_VIEW_CASCADES)
+    defined(DEBUG_VIEW_BRDF_D) || defined(DEBUG_VIEW_BRDF_G) || defined(DEBUG_VIEW_BRDF_F) || defined(DEBUG_VIEW_CASCADES) || \
+    defined(DEBUG_VIEW_LIGHT_COUNT)
 #define DEBUG_VIEW
 #endif
 
@@ -53,6 +54,10 @@ vec3 debugViewValue(vec3 baseColor, float metallic, float perceptualRoughness, v
     return debugBytes(vec3(occlusion));
 #elif defined(DEBUG_VIEW_EMISSIVE)
     return emissive;
+#elif defined(DEBUG_VIEW_LIGHT_COUNT)
+    // The length of this point's light list (its cluster's, directional lights included), in
+    // the heat map's bins (shared/ClusterData.h; the legend is render/passes/DebugViewPass's).
+    return srgbToLinear(vec3(lightCountColor(lightCountBin(lightList(vWorldPosition, gl_FragCoord).count))));
 #elif defined(DEBUG_VIEW_CASCADES)
     // The first directional light with cascades: its cascade's colour, darkened in its shadow;
     // grey beyond the shadow distance or without one.

@@ -8,6 +8,7 @@
 // ALPHA_MASK there is no discard, so early depth testing stays on.
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
+#include "../common/frame_block.glsl"
 #include "../shared/MaterialData.h"
 #include "../brdf/brdf.glsl"
 #include "../lights/light_list.glsl"
@@ -16,7 +17,6 @@
 #include "../ibl/ibl.glsl"
 #endif
 
-layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
 #define SPECULA_FRAGMENT_STAGE
 #include "../lights/shadow.glsl"
 layout(std140, binding = SPECULA_BINDING_MATERIAL) uniform MaterialBlock { GpuMaterial material; };

@@ -4,12 +4,13 @@
 // it projects into a light's shadow view instead of the camera's.
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
+#include "../common/frame_block.glsl"
 
-layout(std140, binding = SPECULA_BINDING_FRAME) uniform FrameBlock { FrameData frame; };
 #if defined(SHADING_GOURAUD)
 // The lights are read through a buffer texture (lights/light_list.glsl), which every stage
 // may sample (vertex shaders are promised no storage blocks: GL 4.5's minimum is 0).
 #include "../shared/MaterialData.h"
+#define SPECULA_VERTEX_STAGE // lights/light_list.glsl: a vertex outside the view gets every light
 layout(std140, binding = SPECULA_BINDING_MATERIAL) uniform MaterialBlock { GpuMaterial material; };
 #include "classic_lighting.glsl"
 out vec3 vGouraudDiffuse;

@@ -10,6 +10,9 @@
 // Storage buffers
 #define SPECULA_BINDING_BILLBOARDS 3
 #define SPECULA_BINDING_LIGHTS 9 // LightHeader + GpuLight[] (shared/LightData.h), compute passes' view of it
+#define SPECULA_BINDING_CLUSTERS 10      // the cluster lists' words (shared/ClusterData.h), as the culling passes write them
+#define SPECULA_BINDING_CULL_LIGHTS 11   // CullLight[]: the point and spot lights in view
+#define SPECULA_BINDING_CLUSTER_BOUNDS 12 // ClusterBounds[]: each cluster's view-space box
 // Texture units of the forward pass
 #define SPECULA_UNIT_BASE_COLOR 0
 #define SPECULA_UNIT_METALLIC_ROUGHNESS 1
@@ -31,7 +34,9 @@
 #define SPECULA_UNIT_SHADOW_DEPTH 6      // the same atlas, raw depths (PCSS blocker search)
 #define SPECULA_UNIT_SHADOW_RECORDS 7    // shadow records, RGBA32F buffer texture (shared/ShadowData.h)
 #define SPECULA_UNIT_LIGHTS 10           // the light buffer's texel view (lights/light_list.glsl)
-#define SPECULA_UNIT_IRRADIANCE 11       // the irradiance cube (ibl/ibl.glsl)
+#define SPECULA_UNIT_CLUSTERS 11         // the cluster lists' texel view, R32UI (lights/light_list.glsl)
+#define SPECULA_UNIT_IRRADIANCE 16       // the irradiance cube (ibl/ibl.glsl); GL 4.5 promises 16 units, every
+                                         // desktop driver has 32 (Renderer checks: gl::maxTextureUnits)
 #define SPECULA_UNIT_SSAO 12             // forward pass: the blurred ambient occlusion
 #define SPECULA_BINDING_SSAO 5           // uniform buffer: SsaoData
 #define SPECULA_BINDING_EXPOSURE_PARAMS 6 // uniform buffer: ExposureParams

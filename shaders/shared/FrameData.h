@@ -21,10 +21,15 @@ struct FrameData {
     vec4 exposure;         // x = 2^EV (linear scale), y = white point for Reinhard extended
     vec4 ambient;          // rgb constant ambient radiance (cd/m^2) times albedo; w unused
     uvec4 options;         // x = tone mapper (SPECULA_TONEMAP_*), y = light count
+    // The cluster grid of the light lists (shared/ClusterData.h, shading/LightClusters.h):
+    uvec4 clusterGrid;     // x tiles across, y tiles up, z depth slices, w tile width | tile height << 16 (pixels)
+    vec4 clusterDepth;     // slice = floor(log(view depth) * x + y); zw = the target's width and height
+    uvec4 clusterLists;    // x directional lights (every cluster's), y the word their list starts at (ClusterData.h)
+    vec4 clusterTiles;     // xy 1 / tile width and height (pixels): a multiply, not a vector integer division
 };
 
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::FrameData) == 3 * 64 + 4 * 16);
+static_assert(sizeof(specula::shared::FrameData) == 3 * 64 + 8 * 16);
 #endif

@@ -21,10 +21,11 @@ struct LightHeader {
 };
 
 struct GpuLight {
-    vec4 positionRange;  // xyz world position, w range in metres (0 = infinite)
+    vec4 positionRange;  // xyz world position, w range in metres: the light's own, else from the cutoff (0 = infinite)
     vec4 directionType;  // xyz unit direction the light points to, w type (SPECULA_LIGHT_*)
     vec4 colorIntensity; // rgb colour, a intensity (cd or lux)
-    vec4 spot;           // x = 1 / (cos inner - cos outer), y = -cos outer * x (KHR_lights_punctual)
+    vec4 spot;           // x = 1 / (cos inner - cos outer), y = -cos outer * x (KHR_lights_punctual), z = shadow slot + 1
+                         // (0: no map), w = cos outer (the culling's cone)
 };
 
 SPECULA_SHARED_END

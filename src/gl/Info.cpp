@@ -55,6 +55,13 @@ DeviceInfo queryDeviceInfo()
     return info;
 }
 
+int maxTextureUnits()
+{
+    GLint value = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &value);
+    return value;
+}
+
 int maxColorSamples()
 {
     GLint samples = 0;

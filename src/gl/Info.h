@@ -21,6 +21,8 @@ struct DeviceInfo {
 DeviceInfo queryDeviceInfo();
 
 /// GL_MAX_COLOR_TEXTURE_SAMPLES and GL_MAX_DEPTH_TEXTURE_SAMPLES of the current context.
+/// GL_MAX_TEXTURE_IMAGE_UNITS: texture units of a fragment shader (GL 4.5 promises 16).
+int maxTextureUnits();
 int maxColorSamples();
 int maxDepthSamples();
 

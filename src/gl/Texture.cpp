@@ -22,6 +22,7 @@ GLenum glInternalFormat(Format format)
     case Format::RGBA8: return GL_RGBA8;
     case Format::SRGB8_ALPHA8: return GL_SRGB8_ALPHA8;
     case Format::R8UI: return GL_R8UI;
+    case Format::R32UI: return GL_R32UI;
     case Format::RG8UI: return GL_RG8UI;
     case Format::RGBA32UI: return GL_RGBA32UI;
     case Format::R16F: return GL_R16F;
@@ -160,7 +161,7 @@ int bytesPerTexel(Format format)
     switch (format) {
     case Format::R8: case Format::R8UI: return 1;
     case Format::RG8: case Format::RG8UI: case Format::R16F: return 2;
-    case Format::RGBA8: case Format::SRGB8_ALPHA8: case Format::RG16F: case Format::R32F: return 4;
+    case Format::RGBA8: case Format::SRGB8_ALPHA8: case Format::RG16F: case Format::R32F: case Format::R32UI: return 4;
     case Format::RGBA16F: case Format::RG32F: return 8;
     case Format::RGBA32F: case Format::RGBA32UI: return 16;
     default: return 0; // depth formats: no buffer view
@@ -214,7 +215,8 @@ size_t Texture::planes(int level) const
 
 bool Texture::isInteger() const
 {
-    return mDesc.format == Format::R8UI || mDesc.format == Format::RG8UI || mDesc.format == Format::RGBA32UI;
+    return mDesc.format == Format::R8UI || mDesc.format == Format::RG8UI || mDesc.format == Format::R32UI ||
+           mDesc.format == Format::RGBA32UI;
 }
 
 void Texture::upload(int level, int layer, int channels, PixelType type, const void* pixels)

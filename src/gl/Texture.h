@@ -21,7 +21,7 @@ enum class TextureType { Texture2D, Texture2DArray, Cube, Texture2DMultisample, 
 
 enum class Format {
     R8, RG8, RGBA8, SRGB8_ALPHA8,
-    R8UI, RG8UI, RGBA32UI, ///< unsigned integers: read with usampler and texelFetch, never filtered
+    R8UI, RG8UI, R32UI, RGBA32UI, ///< unsigned integers: read with usampler and texelFetch, never filtered
     R16F, RG16F, RGBA16F,
     R32F, RG32F, RGBA32F,
     Depth24, Depth32F, Depth24Stencil8,

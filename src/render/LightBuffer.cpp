@@ -10,6 +10,7 @@
 
 #include "core/Error.h"
 #include "gl/State.h"
+#include "shading/LightClusters.h"
 #include "shaders/shared/Bindings.h"
 
 namespace specula::render {
@@ -49,18 +50,19 @@ void LightBuffer::allocate(size_t capacity)
     mCapacity = int(capacity);
 }
 
-shared::GpuLight LightBuffer::pack(const PlacedLight& placed, int shadowSlot)
+shared::GpuLight LightBuffer::pack(const PlacedLight& placed, int shadowSlot, float cutoff)
 {
     const scene::Light& l = placed.light;
     shared::GpuLight gpu{};
-    gpu.positionRange = glm::vec4(placed.position, std::max(l.range, 0.0f));
+    const bool directional = l.type == scene::Light::Type::Directional;
+    gpu.positionRange = glm::vec4(placed.position, directional ? 0.0f : effectiveRange(std::max(l.range, 0.0f), cutoff));
     const glm::vec3 direction = glm::length(placed.direction) > 0.0f ? glm::normalize(placed.direction) : glm::vec3(0, 0, -1);
     gpu.directionType = glm::vec4(direction, float(uint32_t(l.type)));
     gpu.colorIntensity = glm::vec4(l.color, std::max(l.intensity, 0.0f));
     // KHR_lights_punctual: 1e-3 keeps inner == outer from dividing by zero (a hard edge).
     const float cosOuter = std::cos(l.outerConeAngle);
     const float scale = 1.0f / std::max(std::cos(l.innerConeAngle) - cosOuter, 1e-3f);
-    gpu.spot = glm::vec4(scale, -cosOuter * scale, float(shadowSlot + 1), 0.0f);
+    gpu.spot = glm::vec4(scale, -cosOuter * scale, float(shadowSlot + 1), cosOuter);
     return gpu;
 }
 
@@ -70,26 +72,42 @@ void LightBuffer::setAll(const std::vector<PlacedLight>& lights)
         throw Error("{} lights: a shader's storage block holds at most {} here (GL_MAX_SHADER_STORAGE_BLOCK_SIZE)", lights.size(), mMaxCount);
     mLights = lights;
     mShadowSlots.assign(mLights.size(), -1);
+    mDirectional = int(std::count_if(mLights.begin(), mLights.end(),
+                                     [](const PlacedLight& l) { return l.light.type == scene::Light::Type::Directional; }));
     size_t capacity = size_t(mCapacity);
     while (capacity < mLights.size()) capacity *= 2;
     capacity = std::min(capacity, std::max(size_t(mMaxCount), size_t(mCapacity))); // doubling never passes the limit
     if (capacity != size_t(mCapacity)) allocate(capacity);
+    uploadAll();
+}
+
+void LightBuffer::uploadAll()
+{
     // Header and lights in one upload; what lies past the count is never read.
     std::vector<std::byte> bytes(offsetOf(count()));
     const shared::LightHeader header{glm::uvec4(uint32_t(mLights.size()), 0u, 0u, 0u)};
     std::memcpy(bytes.data(), &header, sizeof header);
     for (size_t i = 0; i < mLights.size(); ++i) {
-        const shared::GpuLight gpu = pack(mLights[i]);
+        const shared::GpuLight gpu = pack(mLights[i], mShadowSlots[i], mCutoff);
         std::memcpy(bytes.data() + offsetOf(int(i)), &gpu, sizeof gpu);
     }
     mBuffer.update(0, bytes.size(), bytes.data());
 }
 
+void LightBuffer::setCutoff(float cutoff)
+{
+    if (cutoff == mCutoff) return;
+    mCutoff = cutoff;
+    uploadAll();
+}
+
 void LightBuffer::set(int index, const PlacedLight& light)
 {
     assert(index >= 0 && index < count());
+    const auto directional = [](const PlacedLight& l) { return l.light.type == scene::Light::Type::Directional ? 1 : 0; };
+    mDirectional += directional(light) - directional(mLights[size_t(index)]);
     mLights[size_t(index)] = light;
-    const shared::GpuLight gpu = pack(light, mShadowSlots[size_t(index)]);
+    const shared::GpuLight gpu = pack(light, mShadowSlots[size_t(index)], mCutoff);
     mBuffer.update(offsetOf(index), sizeof gpu, &gpu);
 }
 
@@ -98,7 +116,7 @@ void LightBuffer::setShadowSlot(int index, int slot)
     assert(index >= 0 && index < count());
     if (mShadowSlots[size_t(index)] == slot) return;
     mShadowSlots[size_t(index)] = slot;
-    const shared::GpuLight gpu = pack(mLights[size_t(index)], slot);
+    const shared::GpuLight gpu = pack(mLights[size_t(index)], slot, mCutoff);
     mBuffer.update(offsetOf(index) + offsetof(shared::GpuLight, spot), sizeof gpu.spot, &gpu.spot);
 }
 

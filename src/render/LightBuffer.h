@@ -33,6 +33,8 @@ public:
     void set(int index, const PlacedLight& light);
 
     int count() const { return int(mLights.size()); }
+    /// How many of them are directional (every light cluster lists them: FrameData.clusterLists).
+    int directionalCount() const { return mDirectional; }
     /// How many lights the current buffer holds before it must be replaced.
     int capacity() const { return mCapacity; }
     /// The most lights the GL lets a shader reach, in a storage block and in a buffer texture.
@@ -52,16 +54,27 @@ public:
     void setShadowSlot(int index, int slot);
     int shadowSlot(int index) const { return mShadowSlots[size_t(index)]; }
 
-    static shared::GpuLight pack(const PlacedLight& light, int shadowSlot = -1);
+    /// The cutoff that gives lights without a range theirs (shading/LightClusters.h,
+    /// effectiveRange): a change re-uploads every light.
+    void setCutoff(float cutoff);
+    float cutoff() const { return mCutoff; }
+
+    /// The light as the GPU holds it: a light without a range gets effectiveRange(0, cutoff).
+    static shared::GpuLight pack(const PlacedLight& light, int shadowSlot = -1, float cutoff = kDefaultCutoff);
+    /// The default cutoff: 10⁻⁴, an effective range of 100 m.
+    static constexpr float kDefaultCutoff = 1e-4f;
 
 private:
     void allocate(size_t capacity);
+    void uploadAll();
 
     gl::Buffer mBuffer;
     gl::Texture mTexels;
     uint32_t mRetiredTexels = 0; ///< the texel view a growth deleted, for gl::State to forget
     int mCapacity = 0;
     int mMaxCount = 0;
+    float mCutoff = kDefaultCutoff;
+    int mDirectional = 0;
     std::vector<PlacedLight> mLights;
     std::vector<int> mShadowSlots;
 };

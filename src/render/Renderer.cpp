@@ -9,6 +9,7 @@
 #include "gl/Info.h"
 #include "gl/TimerQuery.h"
 #include "shading/CameraExposure.h"
+#include "shading/LightClusters.h"
 #include "render/FrameContext.h"
 #include "render/GpuScene.h"
 #include "render/graph/GlGraphBackend.h"
@@ -145,6 +146,14 @@ struct Renderer::Impl {
         f.exposure = glm::vec4(exposure, s.reinhardWhite, 0.0f, 0.0f);
         f.ambient = glm::vec4(s.ambient, 0.0f);
         f.options = glm::uvec4(tonemapId(s.tonemap), uint32_t(stores.lights.count()), 0u, 0u);
+        const ClusterGrid grid = ClusterGrid::make(s.width, s.height, view.projection);
+        f.clusterGrid = glm::uvec4(uint32_t(grid.tilesX), uint32_t(grid.tilesY), uint32_t(grid.slices),
+                                   uint32_t(grid.tileWidth) | uint32_t(grid.tileHeight) << 16);
+        f.clusterDepth = glm::vec4(grid.sliceScale(), grid.sliceBias(), float(s.width), float(s.height));
+        // What the culling's header will say, known here: shading reads it as uniforms.
+        f.clusterLists = glm::uvec4(uint32_t(stores.lights.directionalCount()),
+                                    uint32_t(SPECULA_CLUSTER_HEADER_WORDS + 2 * grid.count()), 0u, 0u);
+        f.clusterTiles = glm::vec4(1.0f / float(grid.tileWidth), 1.0f / float(grid.tileHeight), 0.0f, 0.0f);
         stores.frame.upload();
         return exposure;
     }
@@ -163,7 +172,13 @@ struct Renderer::Impl {
     }
 };
 
-Renderer::Renderer() : mImpl(std::make_unique<Impl>()) {}
+Renderer::Renderer() : mImpl(std::make_unique<Impl>())
+{
+    // The forward pass binds units up to SPECULA_UNIT_IRRADIANCE (shaders/shared/Bindings.h).
+    if (gl::maxTextureUnits() <= SPECULA_UNIT_IRRADIANCE)
+        throw Error("this OpenGL implementation has {} texture units; Specula needs {}", gl::maxTextureUnits(),
+                    SPECULA_UNIT_IRRADIANCE + 1);
+}
 Renderer::~Renderer() = default;
 
 void Renderer::setScene(const scene::Scene& scene)
@@ -241,6 +256,7 @@ void Renderer::render(const View& view, const FrameSettings& requested)
     r.checkSupport(settings);
     r.stats = {};
     r.stores.state.resetCounters();
+    r.stores.lights.setCutoff(std::max(settings.lightCutoff, 0.0f));
     const float exposure = r.uploadFrameData(view, settings);
     const FrameContext context{view, settings, settings.width, settings.height, settings.msaa, exposure,
                                r.stores, r.backend, r.stats};
@@ -258,6 +274,21 @@ void Renderer::render(const View& view, const FrameSettings& requested)
     r.stats.drawCalls = r.stores.state.drawCalls();
     r.stats.transientTextures = r.backend.liveTextures();
     for (const GraphPassTiming& t : r.backend.timings()) r.stats.passes.push_back({t.name, t.timer->elapsedMs(), t.wallMs});
+    if (frame->outputs.clusters) {
+        const LightCullPass& culling = r.passes.lightCull;
+        const ClusterCounts counts = culling.counts();
+        FrameStats::Clusters& c = r.stats.clusters;
+        c.tilesX = culling.grid().tilesX;
+        c.tilesY = culling.grid().tilesY;
+        c.slices = culling.grid().slices;
+        c.lightsInView = int(counts.visible);
+        c.directional = int(counts.directional);
+        c.maxPerCluster = int(counts.longest);
+        c.entries = counts.entries;
+        c.meanPerCluster = double(counts.entries) / double(std::max(culling.grid().count(), 1));
+        c.bufferBytes = culling.capacityWords() * sizeof(uint32_t);
+        c.everyLight = frame->outputs.everyLight;
+    }
     r.last = std::move(frame);
     r.lastSettings = settings;
     r.lastExposureScale = exposure;
@@ -440,6 +471,11 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
         break;
     }
     }
+}
+
+void Renderer::setClusterShrinkForTesting(float fraction)
+{
+    mImpl->passes.lightCull.setShrinkForTesting(fraction);
 }
 
 // The lights (render/LightBuffer).

@@ -54,6 +54,12 @@ struct EnvironmentView {
     float skyboxBlur = 0.0f;      ///< perceptual roughness of the skybox (0 = sharp)
 };
 
+/// Which lights each shading point evaluates (docs/clustered-shading.md).
+enum class LightCulling {
+    Clustered, ///< its cluster's list, culled on the GPU every frame (the default)
+    None,      ///< every light of the frame (brute force: for comparisons and measurements)
+};
+
 /// What a frame looks like. Zero values are not all defaults; use the initialisers.
 struct FrameSettings {
     int width = 1280;
@@ -84,6 +90,11 @@ struct FrameSettings {
     std::optional<float> ev100;
     /// Shadow maps (settings/PassSettings.h), on by default.
     ShadowSettings shadows;
+    LightCulling lightCulling = LightCulling::Clustered;
+    /// Point and spot lights without a range are given one: where their illuminance falls to
+    /// lightCutoff × their illuminance at 1 m, i.e. 1 m / √lightCutoff (100 m by default); the
+    /// error that makes is below lightCutoff × that illuminance everywhere. 0: infinite.
+    float lightCutoff = 1e-4f;
     // Post-processing (settings/PassSettings.h): each off by default and then free.
     BloomSettings bloom;
     SsaoSettings ssao;
@@ -129,6 +140,21 @@ struct FrameStats {
         int dropped = 0;
         int atlasSize = 0;
     } shadows;
+    /// Clustered light culling ("light culling" in `passes` is its time): the grid, the point
+    /// and spot lights that touch the view, the directional lights every cluster lists, and the
+    /// cluster lists' lengths. All 0 when the frame culled nothing (LightCulling::None, Doom).
+    struct Clusters {
+        int tilesX = 0, tilesY = 0, slices = 0;
+        int lightsInView = 0;
+        int directional = 0;
+        int maxPerCluster = 0;
+        double meanPerCluster = 0.0;
+        size_t entries = 0;      ///< light indices of all the lists
+        size_t bufferBytes = 0;  ///< the lists' buffer
+        /// The frame shaded with every light: the culling before it had listed nearly every one
+        /// of a few lights in nearly every cluster (render/passes/LightCullPass.h).
+        bool everyLight = false;
+    } clusters;
 };
 
 class Renderer {
@@ -214,6 +240,10 @@ public:
     /// A picture of the last frame's shadow atlas, drawn now as the shadow-atlas debug view
     /// draws it, `size`² RGBA8 (UI, ImGui::Image): its GL texture name, 0 when no light had a map.
     uint32_t shadowAtlasImage(int size);
+
+    /// Tests only: shrinks every light cluster's box about its centre by `fraction` of its
+    /// size (0: the true boxes), so that a test can show the clustered frame then differs.
+    void setClusterShrinkForTesting(float fraction);
 
 private:
     struct Impl;

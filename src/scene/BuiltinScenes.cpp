@@ -5,7 +5,7 @@
 
 namespace specula::scene {
 
-std::optional<SceneDocument> builtinScene(std::string_view name)
+std::optional<SceneDocument> builtinScene(std::string_view name, std::optional<int> lights)
 {
     SceneDocument document;
     if (name.empty() || name == "demo") {
@@ -25,6 +25,15 @@ std::optional<SceneDocument> builtinScene(std::string_view name)
             document.render.ambient = glm::vec3(0.03f);
             document.environment.skyByDefault = false;
         }
+        return document;
+    }
+    if (name == "many-lights") {
+        // Clustered shading's benchmark: lights only where they are placed, no sky, no rig; a
+        // faint ambient so that the unlit floor reads as a floor.
+        document.scene = makeManyLightsScene(lights.value_or(kManyLightsDefault));
+        document.render.defaultLights = false;
+        document.render.ambient = glm::vec3(0.01f);
+        document.environment.skyByDefault = false;
         return document;
     }
     if (name == "doom") {

@@ -9,8 +9,11 @@
 
 namespace specula::scene {
 
-/// "demo" (also the empty name), "learnopengl", "learnopengl-ibl" or "doom"; nullopt for any
-/// other name (a file, then).
-std::optional<SceneDocument> builtinScene(std::string_view name);
+/// "demo" (also the empty name), "learnopengl", "learnopengl-ibl", "doom" or "many-lights"
+/// (with `lights` point lights, 1,024 when unset); nullopt for any other name (a file, then).
+std::optional<SceneDocument> builtinScene(std::string_view name, std::optional<int> lights = std::nullopt);
+
+/// The many-lights scene's light count when none is asked for.
+constexpr int kManyLightsDefault = 1024;
 
 } // namespace specula::scene

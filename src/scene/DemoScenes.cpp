@@ -1,6 +1,8 @@
 #include "scene/DemoScenes.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -184,6 +186,60 @@ Scene makeDemoScene()
     camera.zfar = 100.0f;
     const int node = addCamera(scene, camera, {0.0f, 3.6f, 11.0f}, {0.0f, 2.7f, 0.0f});
     // The scene's first camera is the one first met walking the roots: move it to the front.
+    scene.roots.pop_back();
+    scene.roots.insert(scene.roots.begin(), node);
+    return scene;
+}
+
+Scene makeManyLightsScene(int lights)
+{
+    Scene scene;
+    scene.name = "many-lights";
+    Material floor;
+    floor.baseColorFactor = glm::vec4(0.6f, 0.6f, 0.6f, 1.0f);
+    floor.metallicFactor = 0.0f;
+    floor.roughnessFactor = 0.7f;
+    addShape(scene, makePlane(400.0f), floor, glm::mat4(1.0f), "floor");
+    const Primitive sphere = makeUvSphere(0.8f, 32, 32);
+    for (int row = 0; row < 7; ++row) {
+        for (int col = 0; col < 7; ++col) {
+            Material material;
+            material.baseColorFactor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+            material.metallicFactor = float(row) / 6.0f;
+            material.roughnessFactor = std::clamp(float(col) / 6.0f, 0.1f, 1.0f);
+            const glm::vec3 position((float(col) - 3.0f) * 2.5f, 0.8f, (float(row) - 3.0f) * 2.5f);
+            addShape(scene, sphere, material, glm::translate(glm::mat4(1.0f), position), "sphere");
+        }
+    }
+    // One light per 16 m² over a square of side max(20, 4 √n) m; a fixed hash of the light's
+    // number places it, so a count always gives the same scene.
+    const float side = std::max(20.0f, 4.0f * std::sqrt(float(std::max(lights, 0))));
+    auto hash = [](uint32_t x) {
+        x ^= x >> 16;
+        x *= 0x7feb352du;
+        x ^= x >> 15;
+        x *= 0x846ca68bu;
+        x ^= x >> 16;
+        return float(x >> 8) / float(1u << 24); // [0, 1)
+    };
+    for (int i = 0; i < lights; ++i) {
+        const uint32_t k = uint32_t(i) * 4u;
+        Light light;
+        light.type = Light::Type::Point;
+        light.range = 4.0f;
+        light.intensity = 8.0f; // cd: 8 lux at 1 m
+        const float hue = hash(k + 3u) * 6.0f;
+        light.color = glm::clamp(glm::vec3(std::abs(hue - 3.0f) - 1.0f, 2.0f - std::abs(hue - 2.0f), 2.0f - std::abs(hue - 4.0f)),
+                                 0.0f, 1.0f) * 0.7f + 0.3f;
+        light.castShadows = false;
+        const glm::vec3 position((hash(k) - 0.5f) * side, 0.3f + 1.2f * hash(k + 1u), (hash(k + 2u) - 0.5f) * side);
+        addLight(scene, light, position, {0.0f, -1.0f, 0.0f});
+    }
+    Camera camera;
+    camera.yfov = glm::radians(50.0f);
+    camera.znear = 0.1f;
+    camera.zfar = 150.0f;
+    const int node = addCamera(scene, camera, {0.0f, 7.0f, 16.0f}, {0.0f, 0.0f, 0.0f});
     scene.roots.pop_back();
     scene.roots.insert(scene.roots.begin(), node);
     return scene;

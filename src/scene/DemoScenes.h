@@ -20,6 +20,13 @@ Scene makeLearnOpenGlScene();
 /// z = -2 (the environment is set by the caller and drawn as the skybox).
 Scene makeLearnOpenGlIblScene();
 
+/// The many-lights scene (clustered shading's benchmark, docs/clustered-shading.md): a 7×7
+/// grid of spheres on a 400 m square floor, and `lights` coloured point lights of range 4 m,
+/// 0.3–1.5 m above the floor, scattered over a square whose area grows with their number (one
+/// light per 16 m², and at least 20 × 20 m): the same deterministic places for the same count.
+/// Camera at (0, 7, 16) looking at the origin, 50° fov, near 0.1, far 150.
+Scene makeManyLightsScene(int lights);
+
 /// Adds the default rig when a scene has no light: three directional lights (key 3 lux from
 /// the upper left front, fill 1 lux from the right, rim 2 lux from behind), placed relative to
 /// a viewer at `viewDirection` (from the scene towards the camera). Returns lights added.

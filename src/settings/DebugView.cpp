@@ -9,7 +9,7 @@ std::optional<DebugView> parseDebugView(std::string_view name)
     if (name == "bloom") return DebugView::Bloom;
     for (DebugView view : {DebugView::BaseColor, DebugView::Normal, DebugView::Roughness, DebugView::Metallic, DebugView::Occlusion,
                            DebugView::Emissive, DebugView::BrdfD, DebugView::BrdfG, DebugView::BrdfF, DebugView::Cascades,
-                           DebugView::ShadowAtlas})
+                           DebugView::ShadowAtlas, DebugView::LightCount})
         if (name == debugViewName(view)) return view;
     return std::nullopt;
 }
@@ -31,6 +31,7 @@ const char* debugViewName(DebugView view)
     case DebugView::BrdfF: return "brdf-f";
     case DebugView::Cascades: return "cascades";
     case DebugView::ShadowAtlas: return "shadow-atlas";
+    case DebugView::LightCount: return "light-count";
     }
     return "none";
 }

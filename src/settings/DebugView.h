@@ -26,6 +26,9 @@ enum class DebugView {
     /// The shadow atlas, fitted into the frame: grey = 1 − (1 − window depth)^¼ (white: empty or
     /// far; the curve keeps perspective depths near 1 apart), turns shadows on.
     ShadowAtlas,
+    /// Lights per pixel: the length of each shading point's light list (its cluster's, with
+    /// the directional lights), as a heat map with its legend (docs/clustered-shading.md).
+    LightCount,
 };
 
 std::optional<DebugView> parseDebugView(std::string_view name);

@@ -13,9 +13,10 @@
 
 namespace specula::setup {
 
-scene::SceneDocument loadSceneOrBuiltin(const std::string& name, const scene::LoadOptions& options)
+scene::SceneDocument loadSceneOrBuiltin(const std::string& name, const scene::LoadOptions& options, std::optional<int> lights)
 {
-    if (std::optional<scene::SceneDocument> builtin = scene::builtinScene(name)) return std::move(*builtin);
+    if (lights && (*lights < 0 || *lights > (1 << 22))) throw Error("--lights must be between 0 and 4194304 (got {})", *lights);
+    if (std::optional<scene::SceneDocument> builtin = scene::builtinScene(name, lights)) return std::move(*builtin);
     return scene::loadScene(name, options);
 }
 
@@ -46,7 +47,7 @@ void applyMaterialOverrides(const scene::SceneDocument& document, const FrameOpt
         const auto view = parseDebugView(*options.debugView);
         if (!view)
             throw Error("unknown --debug-view '{}' (base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, "
-                        "brdf-f, ssao, bloom)", *options.debugView);
+                        "brdf-f, ssao, bloom, cascades, shadow-atlas, light-count)", *options.debugView);
         s.debugView = *view;
     }
 }
@@ -99,6 +100,17 @@ void resolvePostSettings(const scene::SceneDocument& document, const FrameOption
         else if (f == "pcf") s.shadows.filter = ShadowFilter::Pcf;
         else if (f == "pcss") s.shadows.filter = ShadowFilter::Pcss;
         else throw Error("--shadow-filter must be hard, pcf or pcss (got '{}')", f);
+    }
+    if (options.lightCulling) {
+        const std::string& c = *options.lightCulling;
+        if (c == "clustered") s.lightCulling = render::LightCulling::Clustered;
+        else if (c == "none") s.lightCulling = render::LightCulling::None;
+        else throw Error("--light-culling must be clustered or none (got '{}')", c);
+    }
+    if (options.lightCutoff) {
+        const float c = *options.lightCutoff;
+        if (!(c >= 0.0f && c < 1.0f)) throw Error("--light-cutoff must be at least 0 and below 1 (got {})", double(c));
+        s.lightCutoff = c;
     }
 }
 

@@ -45,10 +45,15 @@ struct FrameOptions {
     /// Which files a scene may name and what it may allocate (--allow-external-files,
     /// --max-buffer-bytes, --max-accessor-count, --max-image-size, --max-texture-memory).
     scene::LoadOptions load;
+    std::optional<std::string> lightCulling;  ///< clustered | none (--light-culling)
+    std::optional<float> lightCutoff;         ///< --light-cutoff
+    std::optional<int> lights;                ///< the many-lights scene's count (--lights)
 };
 
 /// `name` is a .gltf/.glb/.json path, or a built-in scene (scene/BuiltinScenes.h); empty = demo.
-scene::SceneDocument loadSceneOrBuiltin(const std::string& name, const scene::LoadOptions& options = {});
+/// `lights`: the many-lights scene's count.
+scene::SceneDocument loadSceneOrBuiltin(const std::string& name, const scene::LoadOptions& options = {},
+                                        std::optional<int> lights = std::nullopt);
 
 /// Settings from the scene document overridden by the options. Throws Error on bad values.
 render::FrameSettings resolveSettings(const scene::SceneDocument& document, const FrameOptions& options);

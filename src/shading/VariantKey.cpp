@@ -15,6 +15,7 @@ constexpr uint64_t kEnergyCompensation = 1u << 10;
 constexpr uint64_t kSsao = 1u << 11;
 constexpr uint64_t kDoomIndexed = 1u << 12;
 constexpr uint64_t kShadows = 1u << 13;
+constexpr uint64_t kLightsAll = 1u << 14;
 constexpr uint64_t kShadowDirectional = uint64_t(1) << 32, kShadowSpot = uint64_t(1) << 33, kShadowPoint = uint64_t(1) << 34;
 constexpr int kShadowFilterShift = 35, kShadowTapsShift = 37;
 constexpr int kDebugShift = 16, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
@@ -61,11 +62,13 @@ constexpr std::array kTable = {
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::BrdfG), "DEBUG_VIEW_BRDF_G", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::BrdfF), "DEBUG_VIEW_BRDF_F", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::Cascades), "DEBUG_VIEW_CASCADES", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::LightCount), "DEBUG_VIEW_LIGHT_COUNT", K::DebugView},
     VariantDefine{kIbl, kIbl, "IBL", K::FrameFeature},
     VariantDefine{kEnergyCompensation, kEnergyCompensation, "ENERGY_COMPENSATION", K::FrameFeature},
     VariantDefine{kSsao, kSsao, "SSAO", K::FrameFeature},
     VariantDefine{kDoomIndexed, kDoomIndexed, "DOOM_INDEXED", K::FrameFeature},
     VariantDefine{kShadows, kShadows, "SHADOWS", K::FrameFeature},
+    VariantDefine{kLightsAll, kLightsAll, "LIGHTS_ALL", K::FrameFeature},
     VariantDefine{kShadowDirectional, kShadowDirectional, "SHADOW_DIRECTIONAL", K::FrameFeature},
     VariantDefine{kShadowSpot, kShadowSpot, "SHADOW_SPOT", K::FrameFeature},
     VariantDefine{kShadowPoint, kShadowPoint, "SHADOW_POINT", K::FrameFeature},
@@ -84,7 +87,8 @@ constexpr std::array kTable = {
     VariantDefine{SPECULA_MATERIAL_ALPHA_BLEND, SPECULA_MATERIAL_ALPHA_BLEND, "ALPHA_BLEND", K::MaterialFeature},
     VariantDefine{SPECULA_MATERIAL_USE_VERTEX_COLOR, SPECULA_MATERIAL_USE_VERTEX_COLOR, "VERTEX_COLOR", K::MaterialFeature},
 };
-static_assert((kFeatureMask & (kIbl | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kDebugMask)) == 0);
+static_assert((kFeatureMask & (kIbl | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
+static_assert(uint64_t(DebugView::LightCount) < (uint64_t(1) << 4)); // the debug field's 4 bits
 static_assert((kDiffuseMask & (kShadowDirectional | kShadowSpot | kShadowPoint | kShadowFilterMask | kShadowTapsMask)) == 0);
 
 } // namespace
@@ -100,7 +104,8 @@ bool isMaterialDebugView(DebugView view)
 }
 
 ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& shading, DebugView debugView, bool ibl,
-                                    bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows)
+                                    bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows,
+                                    bool allLights)
 {
     uint64_t key = features & kFeatureMask;
     key |= at(kModelShift, shading.model);
@@ -113,6 +118,7 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
     if (energyCompensation) key |= kEnergyCompensation;
     if (ssao) key |= kSsao;
     if (doomIndexed) key |= kDoomIndexed;
+    if (allLights) key |= kLightsAll;
     if (shadows.active()) {
         key |= kShadows;
         if (shadows.directional) key |= kShadowDirectional;

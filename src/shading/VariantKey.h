@@ -44,8 +44,11 @@ struct ForwardVariant {
     /// resolved shading). A model other than the physically based one has no BRDF choices, so
     /// its key holds none and variants that differ only there share one program. `shadows`:
     /// the frame's shadow maps (SHADOWS and SHADOW_*: lights/shadow.glsl samples them).
+    /// `allLights`: every light at every shading point, no cluster lists (LIGHTS_ALL, the
+    /// brute-force frame).
     static ForwardVariant make(uint32_t features, const ResolvedShading& shading, DebugView debugView, bool ibl,
-                               bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows = {});
+                               bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows = {},
+                               bool allLights = false);
 
     ResolvedShading shading() const;
     /// The material or BRDF debug view the key selects, if any.

@@ -1,7 +1,10 @@
 // `specula render` and `specula info` end to end.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
+#include <string>
+#include <utility>
 
 #include "CliRunner.h"
 #include "core/ImageIO.h"
@@ -62,4 +65,42 @@ TEST(CliRender, GizmosDrawTheLights)
     // and sun lights' rods, 2-pixel lines: a few thousand pixels (2684 when written), far from all.
     EXPECT_GT(changed, 100u);
     EXPECT_LT(changed, 5000u);
+}
+
+TEST(CliRender, ManyLightsStatsAndLightCountView)
+{
+    // The many-lights scene with --lights; --stats prints the clusters' line.
+    const std::string dir = tempDir("many-lights");
+    const auto stats = runCli("render many-lights --lights 256 --width 160 --height 90 --stats -o " + dir + "/many.png");
+    ASSERT_EQ(stats.exitCode, 0) << stats.err;
+    EXPECT_NE(stats.out.find("light culling"), std::string::npos) << stats.out;
+    EXPECT_NE(stats.out.find("light clusters 16x9x24:"), std::string::npos) << stats.out;
+
+    // The light-count view: black where no light reaches, heat elsewhere, the legend's ten
+    // boxes in the bottom-left corner (its first, for 0 lights, black on the dark band).
+    const auto view = runCli("render many-lights --lights 256 --width 320 --height 180 --msaa 1 --debug-view light-count -o " + dir +
+                             "/count.png");
+    ASSERT_EQ(view.exitCode, 0) << view.err;
+    const specula::ImageRGBA8 image = specula::readPng(dir + "/count.png");
+    ASSERT_EQ(image.width, 320);
+    auto pixel = [&](int x, int yFromBottom) {
+        const size_t i = (size_t(image.height - 1 - yFromBottom) * size_t(image.width) + size_t(x)) * 4;
+        return std::array<int, 3>{image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]};
+    };
+    // The legend's band is (24, 24, 24); its "1" box (0.10, 0.10, 0.45) starts 4 + 30 pixels in.
+    EXPECT_EQ(pixel(1, 1), (std::array<int, 3>{24, 24, 24}));
+    EXPECT_EQ(pixel(40, 20), (std::array<int, 3>{26, 26, 115}));
+    size_t heated = 0;
+    for (int y = 40; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) heated += pixel(x, y)[0] + pixel(x, y)[1] + pixel(x, y)[2] > 0 ? 1 : 0;
+    EXPECT_GT(heated, size_t(image.width * image.height / 10)) << "lights reach much of the floor";
+
+    // Bad values are one clear line each.
+    for (const auto& [flags, phrase] : {std::pair<std::string, std::string>{"--light-cutoff 1.5", "--light-cutoff must be"},
+                                        {"--light-culling tiled", "--light-culling must be clustered or none"},
+                                        {"--lights -3", "--lights must be between"}}) {
+        const auto r = runCli("render many-lights --width 16 --height 16 " + flags + " -o " + dir + "/bad.png");
+        EXPECT_NE(r.exitCode, 0) << flags;
+        EXPECT_NE(r.err.find(phrase), std::string::npos) << r.err;
+    }
 }

@@ -193,9 +193,12 @@ TEST(CliViewer, ScriptEditsLightMaterialAndBloom)
     EXPECT_EQ(m[1].str(), "64");
     EXPECT_EQ(m[2].str(), m[4].str());
     EXPECT_EQ(m[3].str(), m[5].str());
-    // The Statistics panel's per-pass timings include the bloom pass once bloom is on.
-    EXPECT_TRUE(std::regex_search(r.err, std::regex(R"(frame stats: \d+ draw calls, \d+ triangles, forward [0-9.]+ ms, .*bloom [0-9.]+ ms)")))
+    // The Statistics panel's per-pass timings include the bloom pass once bloom is on (after
+    // the light culling, which the forward pass reads), and the light clusters' statistics.
+    EXPECT_TRUE(std::regex_search(
+        r.err, std::regex(R"(frame stats: \d+ draw calls, \d+ triangles, light culling [0-9.]+ ms, forward [0-9.]+ ms, .*bloom [0-9.]+ ms)")))
         << r.err;
+    EXPECT_TRUE(std::regex_search(r.err, std::regex(R"(light clusters: 1 lights in view, 0 directional, per cluster max 1, mean)"))) << r.err;
 
     const auto start = specula::readPng(dir + "/start.png");
     const auto orbit = specula::readPng(dir + "/orbit.png");

@@ -155,7 +155,8 @@ gl::Program lightReader(bool storage)
            "  if (k < list.count) copy.lights[k] = lightAt(lightListIndex(list, k));\n"
            "}\n";
     std::vector<std::string> defines;
-    if (storage) defines.push_back("SPECULA_LIGHTS_STORAGE");
+    // Every light, not a cluster's list: this reads the buffer, it culls nothing.
+    defines.push_back(storage ? "SPECULA_LIGHTS_STORAGE" : "LIGHTS_ALL");
     gl::Program program({.compute = "lights/read_lights.comp", .defines = defines, .label = "read lights", .root = root});
     fs::remove_all(root);
     return program;

@@ -58,13 +58,13 @@ TEST_F(GlTest, EveryPassAtSeveralSizes)
         const render::View view = render::defaultView(demo, -1, aspect);
         render::FrameSettings s = everything(size.width, size.height, size.msaa);
         renderer.render(view, s);
-        const std::vector<std::string> expected = {"ssao prepass", "ssao", "ssao blur", "forward", "resolve",
+        const std::vector<std::string> expected = {"light culling", "ssao prepass", "ssao", "ssao blur", "forward", "resolve",
                                                    "bloom", "exposure", "tonemap", "fxaa"};
         std::vector<std::string> names = passNames(renderer);
         if (size.msaa == 1) {
             // Nothing to resolve.
             std::vector<std::string> without = expected;
-            without.erase(without.begin() + 4);
+            without.erase(without.begin() + 5);
             EXPECT_EQ(names, without) << size.width << "x" << size.height;
         } else {
             EXPECT_EQ(names, expected) << size.width << "x" << size.height;
@@ -85,7 +85,8 @@ TEST_F(GlTest, EveryPassAtSeveralSizes)
 TEST_F(GlTest, PassesOffCostNothing)
 {
     // Every pass off: the two passes the renderer always had, the fused MSAA resolve in the
-    // tone mapper included; switching passes on and off again returns to exactly that frame.
+    // tone mapper included, after the light culling that the forward pass reads; switching
+    // passes on and off again returns to exactly that frame.
     scene::Scene demo = scene::makeDemoScene();
     render::Renderer renderer;
     renderer.setScene(demo);
@@ -96,11 +97,11 @@ TEST_F(GlTest, PassesOffCostNothing)
     plain.height = 90;
     plain.shadows.enabled = false;
     renderer.render(view, plain);
-    EXPECT_EQ(passNames(renderer), (std::vector<std::string>{"forward", "resolve+tonemap"}));
+    EXPECT_EQ(passNames(renderer), (std::vector<std::string>{"light culling", "forward", "resolve+tonemap"}));
     const ImageRGBA8 before = renderer.readImage();
     renderer.render(view, everything(160, 90, 4));
     renderer.render(view, plain);
-    EXPECT_EQ(passNames(renderer), (std::vector<std::string>{"forward", "resolve+tonemap"}));
+    EXPECT_EQ(passNames(renderer), (std::vector<std::string>{"light culling", "forward", "resolve+tonemap"}));
     EXPECT_EQ(renderer.readImage().pixels, before.pixels);
 }
 

@@ -11,6 +11,7 @@
 #include "render/graph/GlGraphBackend.h"
 #include "render/passes/BillboardPass.h"
 #include "render/passes/DoomPass.h"
+#include "render/passes/LightCullPass.h"
 #include "render/passes/ShadowPass.h"
 #include "shaders/shared/Bindings.h"
 
@@ -87,6 +88,7 @@ struct ForwardPass::Impl {
     std::vector<DrawProgram> materialPrograms;   // this frame's, by material
     SkyboxPass skybox;
     ShadowVariant shadows;                       // this frame's SHADOWS variants
+    bool allLights = false;                      // this frame's LIGHTS_ALL
 
     ForwardProgram& program(const FrameContext& frame, uint32_t features)
     {
@@ -94,7 +96,7 @@ struct ForwardPass::Impl {
         const ResolvedShading shading = resolveShading(s.materialOverride, s.brdfGeometry, features);
         const ForwardVariant variant =
             ForwardVariant::make(features, shading, s.debugView, iblOn(frame), s.energyCompensation, s.ssao.enabled, isDoomFrame(s),
-                                 shadows);
+                                 shadows, allLights);
         auto it = programs.find(variant.key);
         if (it != programs.end()) return it->second;
         ForwardProgram p;
@@ -123,10 +125,11 @@ bool ForwardPass::anyDoomMaterial(const FrameContext& frame)
     });
 }
 
-const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows)
+const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows, bool allLights)
 {
     Impl& r = *mImpl;
     r.shadows = shadows;
+    r.allLights = allLights;
     r.materialPrograms.clear();
     r.skybox.prepare();
     const GpuScene* scene = frame.stores.scene.get();
@@ -151,7 +154,7 @@ FrameDrawLists ForwardPass::drawLists(const FrameContext& frame) const
 }
 
 void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const FrameDrawLists& lists, const Targets& targets,
-                        BillboardPass& billboards, DoomPass* doom, const ShadowPass* shadows)
+                        BillboardPass& billboards, DoomPass* doom, const ShadowPass* shadows, const LightCullPass* culling)
 {
     Impl& r = *mImpl;
     const bool indexed = isDoomFrame(frame.settings);
@@ -161,10 +164,11 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
         [&](FrameGraph::Builder& b) {
             if (targets.occlusion) b.read(targets.occlusion, Use::Sample);
             if (targets.shadows) b.read(targets.shadows, Use::Sample);
+            if (targets.clusters) b.read(targets.clusters, Use::Sample);
             b.write(targets.color, Use::ColorAttachment);
             b.write(targets.depth, Use::DepthAttachment);
         },
-        [&frame, &lists, &r, &billboards, doom, shadows, targets, indexed] {
+        [&frame, &lists, &r, &billboards, doom, shadows, culling, targets, indexed] {
             gl::State& state = frame.state();
             FrameStores& stores = frame.stores;
             const FrameSettings& settings = frame.settings;
@@ -197,6 +201,7 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
             }
             stores.lights.bind(state);
             if (targets.shadows && shadows) shadows->bind(state);
+            if (targets.clusters && culling) culling->bind(state);
             // Doom materials look their colours up in the tables, inline or for the colour-map pass.
             if (doom) doom->bindTables(state);
             if (!stores.scene) return;

@@ -23,6 +23,7 @@ namespace specula::render {
 
 class BillboardPass;
 class DoomPass;
+class LightCullPass;
 class ShadowPass;
 struct FrameContext;
 
@@ -40,8 +41,10 @@ public:
     ForwardPass& operator=(const ForwardPass&) = delete;
 
     /// Each material's program for this frame (compiled on first use), and the DFG table it
-    /// reads, baked on first use. `shadows`: what the frame's shadow maps ask (SHADOWS variants).
-    const std::vector<DrawProgram>& prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows = {});
+    /// reads, baked on first use. `shadows`: what the frame's shadow maps ask (SHADOWS variants);
+    /// `allLights`: every light at every point (LIGHTS_ALL), not the cluster lists.
+    const std::vector<DrawProgram>& prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows = {},
+                                                     bool allLights = false);
     /// The draw lists of the frame's view, sorted with prepareMaterials' programs.
     FrameDrawLists drawLists(const FrameContext& frame) const;
 
@@ -50,13 +53,15 @@ public:
         GraphTexture depth;
         GraphTexture occlusion; ///< SSAO's, when the frame has it
         GraphTexture shadows;   ///< the shadow atlas, when some light has a map
+        GraphBuffer clusters;   ///< the cluster light lists, when the frame culled lights
     };
     /// Adds "forward": clears the targets (to the background radiance, or in a Doom frame its
     /// nearest palette index) and draws into them. `doom` is needed when a material (or the
     /// frame) uses the Doom model: its tables are bound. `shadows` binds the shadow maps when
-    /// targets.shadows is set.
+    /// targets.shadows is set, `culling` the cluster lists when targets.clusters is.
     void addTo(FrameGraph& graph, const FrameContext& frame, const FrameDrawLists& lists, const Targets& targets,
-               BillboardPass& billboards, DoomPass* doom, const ShadowPass* shadows = nullptr);
+               BillboardPass& billboards, DoomPass* doom, const ShadowPass* shadows = nullptr,
+               const LightCullPass* culling = nullptr);
 
     /// Whether any material is shaded with the Doom model under these settings.
     static bool anyDoomMaterial(const FrameContext& frame);

@@ -35,6 +35,7 @@ void finish(Frame& f, FramePasses& passes, const FrameContext& frame)
     } else {
         out.occlusion = {};
     }
+    if (frame.settings.debugView == DebugView::LightCount) passes.debugView().addLightCountLegend(f.graph, frame, out.ldr);
     if (frame.settings.debugView == DebugView::ShadowAtlas && out.shadows)
         passes.debugView().addShadowAtlas(f.graph, frame, out.shadows, out.ldr);
     f.graph.exportTexture(out.ldr);
@@ -56,8 +57,8 @@ void buildForward(Frame& f, FramePasses& passes, const FrameContext& frame)
     const GraphTexture depth = graph.createTexture(multisampled ? "msaa depth" : "depth",
                                                    target(frame, gl::Format::Depth32F, frame.samples));
     DoomPass* doomTables = ForwardPass::anyDoomMaterial(frame) ? &passes.doom() : nullptr;
-    passes.forward.addTo(graph, frame, f.lists, {color, depth, out.occlusion, out.shadows}, passes.billboards, doomTables,
-                         &passes.shadows);
+    passes.forward.addTo(graph, frame, f.lists, {color, depth, out.occlusion, out.shadows, out.clusters}, passes.billboards,
+                         doomTables, &passes.shadows, &passes.lightCull);
     if (multisampled) {
         out.msaaColor = color;
     } else {
@@ -107,9 +108,20 @@ void buildDoom(Frame& f, FramePasses& passes, const FrameContext& frame)
 
 void buildFrame(Frame& f, FramePasses& passes, const FrameContext& frame)
 {
+    // The lights each cluster lists, for every shading path; a Doom frame shades with none.
+    const bool culled = !isDoomFrame(frame.settings) && frame.settings.lightCulling == LightCulling::Clustered;
+    // When the last culling listed nearly every light in nearly every cluster (a few lights
+    // that reach most of the view), shade with every light: a few more evaluations, no index
+    // each (LightCullPass::listsAreNearlyEveryLight). The culling still runs, to say when that
+    // stops holding.
+    const LightBuffer& lights = frame.stores.lights;
+    const bool everyLight = frame.settings.lightCulling == LightCulling::None ||
+                            (culled && passes.lightCull.listsAreNearlyEveryLight(lights.count() - lights.directionalCount()));
+    if (culled) f.outputs.clusters = passes.lightCull.addTo(f.graph, frame);
+    f.outputs.everyLight = everyLight;
     // Shadows first: whether any light has a map picks the forward programs.
     f.outputs.shadows = passes.shadows.addTo(f.graph, frame);
-    passes.forward.prepareMaterials(frame, passes.shadows.variant());
+    passes.forward.prepareMaterials(frame, passes.shadows.variant(), everyLight);
     f.lists = passes.forward.drawLists(frame);
     if (isDoomFrame(frame.settings)) {
         buildDoom(f, passes, frame);

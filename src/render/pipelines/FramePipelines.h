@@ -2,7 +2,7 @@
 // The frame's pipelines: each a composition of passes into a frame graph, not a branch inside
 // one function. Adding a pass to a frame is its own files (render/passes/) plus its line here.
 //
-//   forward: [shadows: cascades, spot, point] [ssao prepass → ssao → ssao blur] → forward → [resolve] → [bloom] → [exposure]
+//   forward: light culling → [shadows: cascades, spot, point] [ssao prepass → ssao → ssao blur] → forward → [resolve] → [bloom] → [exposure]
 //            → tonemap | resolve+tonemap → [fxaa] → [debug view]
 //   doom:    [ssao …] → forward (palette indices) → colour map → [debug view]
 #include <memory>
@@ -15,6 +15,7 @@
 #include "render/passes/ExposurePass.h"
 #include "render/passes/ForwardPass.h"
 #include "render/passes/FxaaPass.h"
+#include "render/passes/LightCullPass.h"
 #include "render/passes/ShadowPass.h"
 #include "render/passes/SsaoPass.h"
 #include "render/passes/TonemapPass.h"
@@ -28,6 +29,7 @@ struct FrameContext;
 struct FramePasses {
     BillboardPass billboards; ///< holds the scene's billboard groups
     ShadowPass shadows;       ///< holds the shadow atlas (maps are kept while nothing changes)
+    LightCullPass lightCull;  ///< holds the cluster grid and the lists' buffers
     ForwardPass forward;
     TonemapPass tonemap;
     SsaoPass& ssao() { return get(mSsao); }
@@ -56,6 +58,8 @@ private:
 
 /// What a frame leaves to be read after it (the graph exports them).
 struct FrameOutputs {
+    GraphBuffer clusters;   ///< the cluster light lists (imported), when the frame culled lights
+    bool everyLight = false; ///< the forward pass shades every light (LIGHTS_ALL)
     GraphTexture shadows;   ///< the shadow atlas (imported), when some light has a map
     GraphTexture ldr;       ///< the sRGB image (readImage, present)
     GraphTexture hdr;       ///< single-sampled radiance, when the frame made one
