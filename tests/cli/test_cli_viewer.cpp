@@ -264,8 +264,9 @@ TEST(CliViewer, ResizingTheWindowRendersAllOfIt)
         EXPECT_EQ(meanDifference(window, frame), 0.0) << name;
         // Its last column and row are the demo's sky and floor, never black (unrendered).
         int dark = 0;
+        const int rowLength = width; // a structured binding cannot be captured (clang 14)
         auto isDark = [&](int x, int y) {
-            const uint8_t* p = &window.pixels[(size_t(y) * size_t(width) + size_t(x)) * 4];
+            const uint8_t* p = &window.pixels[(size_t(y) * size_t(rowLength) + size_t(x)) * 4];
             return p[0] + p[1] + p[2] < 30;
         };
         for (int y = 0; y < height; ++y) dark += isDark(width - 1, y);

@@ -94,5 +94,17 @@ TEST_F(GlTest, SoakMemoryAndGlObjectsStayFlat)
     EXPECT_EQ(glAtEnd, glAtWarmup) << "at warm-up: " << glAtWarmup.describe() << "\nat the end: " << glAtEnd.describe();
     // Tolerance 4 MiB: malloc's arenas and llvmpipe's caches settle in steps of a few hundred
     // KiB; a leak of 40 bytes a frame is 4 MiB over 100,000 frames, of 5 KiB a frame over 800.
+    // Under AddressSanitizer freed memory waits in its quarantine (up to 256 MiB) before it is
+    // reused, so resident memory grows whatever the program does; there LeakSanitizer, at exit,
+    // is the leak check instead.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SPECULA_SOAK_UNDER_ASAN 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(SPECULA_SOAK_UNDER_ASAN)
+    std::printf("soak: AddressSanitizer build, resident memory not bounded (its quarantine grows it)\n");
+#else
     EXPECT_LT(rssAtEnd - rssAtWarmup, 4.0 * 1048576.0) << "resident memory grew after warm-up";
+#endif
 }
