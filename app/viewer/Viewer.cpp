@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/Error.h"
+#include "scene/DemoScenes.h"
 #include "core/ImageIO.h"
 #include "core/Log.h"
 #include "core/ProcessClock.h"
@@ -254,27 +255,13 @@ void Viewer::scatterLights(int count)
     std::vector<render::PlacedLight> lights = currentLights(*mRenderer);
     const glm::vec3 target = mCamera.target();
     const float side = 2.0f * mCamera.distance();
-    auto hash = [](uint32_t x) {
-        x ^= x >> 16;
-        x *= 0x7feb352du;
-        x ^= x >> 15;
-        x *= 0x846ca68bu;
-        x ^= x >> 16;
-        return float(x >> 8) / float(1u << 24);
-    };
     const uint32_t first = uint32_t(lights.size());
     for (int i = 0; i < count; ++i) {
-        const uint32_t k = (first + uint32_t(i)) * 4u;
+        const scene::ScatteredLight s = scene::scatteredLight(first + uint32_t(i), target, side);
         render::PlacedLight placed;
-        placed.light.type = scene::Light::Type::Point;
+        placed.light = s.light;
         placed.light.name = "scattered";
-        placed.light.range = 4.0f;
-        placed.light.intensity = 8.0f;
-        placed.light.castShadows = false;
-        const float hue = hash(k + 3u) * 6.0f;
-        placed.light.color = glm::clamp(glm::vec3(std::abs(hue - 3.0f) - 1.0f, 2.0f - std::abs(hue - 2.0f), 2.0f - std::abs(hue - 4.0f)),
-                                        0.0f, 1.0f) * 0.7f + 0.3f;
-        placed.position = target + glm::vec3((hash(k) - 0.5f) * side, 0.3f + 1.2f * hash(k + 1u), (hash(k + 2u) - 0.5f) * side);
+        placed.position = s.position;
         placed.direction = {0.0f, -1.0f, 0.0f};
         lights.push_back(placed);
     }

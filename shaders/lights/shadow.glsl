@@ -63,7 +63,13 @@ float shadowNoise(vec3 worldPosition)
 
 // Vogel (golden-angle) discs of radius 1: tap k of n at radius sqrt((k + 0.5) / n), angle
 // k × 2.39996323 (the golden angle), so the last taps are the outermost and spread around the
-// disc. Constants, rotated per pixel by a 2×2 matrix: no trigonometry per tap.
+// disc. Constants, rotated per pixel by a 2×2 matrix: no trigonometry per tap. The 16-tap disc
+// is PCSS's blocker search's, and PCF's at the default 16 taps.
+const vec2 kVogel16[16] = vec2[](
+    vec2(0.176777, 0.000000), vec2(-0.225772, 0.206826), vec2(0.034558, -0.393771), vec2(0.284571, 0.371173),
+    vec2(-0.522223, -0.092374), vec2(0.494695, -0.314685), vec2(-0.165466, 0.615525), vec2(-0.315561, -0.607594),
+    vec2(0.684642, 0.250030), vec2(-0.712256, 0.294009), vec2(0.343355, -0.733729), vec2(0.253730, 0.808932),
+    vec2(-0.764746, -0.443186), vec2(0.897134, -0.197232), vec2(-0.547507, 0.778772), vec2(-0.126487, -0.976090));
 #if SHADOW_TAPS == 8
 const vec2 kShadowDisc[8] = vec2[](
     vec2(0.250000, 0.000000), vec2(-0.319290, 0.292496), vec2(0.048872, -0.556877), vec2(0.402444, 0.524918),
@@ -79,18 +85,8 @@ const vec2 kShadowDisc[32] = vec2[](
     vec2(0.435033, 0.759191), vec2(-0.850448, -0.271316), vec2(0.826102, -0.381680), vec2(-0.357888, 0.855156),
     vec2(-0.319407, -0.888034), vec2(0.849909, 0.446688), vec2(-0.944035, 0.248844), vec2(0.536596, -0.834530));
 #else
-const vec2 kShadowDisc[16] = vec2[](
-    vec2(0.176777, 0.000000), vec2(-0.225772, 0.206826), vec2(0.034558, -0.393771), vec2(0.284571, 0.371173),
-    vec2(-0.522223, -0.092374), vec2(0.494695, -0.314685), vec2(-0.165466, 0.615525), vec2(-0.315561, -0.607594),
-    vec2(0.684642, 0.250030), vec2(-0.712256, 0.294009), vec2(0.343355, -0.733729), vec2(0.253730, 0.808932),
-    vec2(-0.764746, -0.443186), vec2(0.897134, -0.197232), vec2(-0.547507, 0.778772), vec2(-0.126487, -0.976090));
+#define kShadowDisc kVogel16
 #endif
-// The blocker search of PCSS: always 16 taps.
-const vec2 kBlockerDisc[16] = vec2[](
-    vec2(0.176777, 0.000000), vec2(-0.225772, 0.206826), vec2(0.034558, -0.393771), vec2(0.284571, 0.371173),
-    vec2(-0.522223, -0.092374), vec2(0.494695, -0.314685), vec2(-0.165466, 0.615525), vec2(-0.315561, -0.607594),
-    vec2(0.684642, 0.250030), vec2(-0.712256, 0.294009), vec2(0.343355, -0.733729), vec2(0.253730, 0.808932),
-    vec2(-0.764746, -0.443186), vec2(0.897134, -0.197232), vec2(-0.547507, 0.778772), vec2(-0.126487, -0.976090));
 
 // The view depth in metres of window depth `z` of a view (linear for orthographic views).
 float shadowLinearDepth(ShadowViewData v, float z)
@@ -149,7 +145,7 @@ float shadowInView(ShadowViewData v, vec3 p, vec4 record0, vec4 record1, vec2 ro
     float blockers = 0.0, blockerDepth = 0.0;
     mat2 turn = mat2(rotation.x, rotation.y, -rotation.y, rotation.x) * search;
     for (int k = 0; k < 16; ++k) {
-        vec2 q = clamp(s.xy + (turn * kBlockerDisc[k]) * texel, lo, hi);
+        vec2 q = clamp(s.xy + (turn * kVogel16[k]) * texel, lo, hi);
         float z = textureLod(shadowDepth, q, 0.0).r;
         if (z < s.z) {
             blockers += 1.0;

@@ -5,7 +5,7 @@
 #include "Prelude.h"
 
 // The brightest parts of the environment, summed per pixel by the diffuse term beside the
-// irradiance cube (shading/EnvironmentMap: takeBrightest).
+// irradiance cube (shading/EnvironmentMap: splitIrradiance).
 #define SPECULA_IBL_BRIGHT_SOURCES 32
 
 SPECULA_SHARED_BEGIN

@@ -16,4 +16,16 @@ constexpr uint64_t fnv1a64(std::string_view bytes)
     return hash;
 }
 
+/// A fixed integer hash of `x` (Wellons' lowbias32) mapped to [0, 1): deterministic scatter
+/// (the many-lights scene, the viewer's scattered lights).
+constexpr float unitHash(uint32_t x)
+{
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return float(x >> 8) / float(1u << 24);
+}
+
 } // namespace specula

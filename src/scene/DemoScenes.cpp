@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/Hash.h"
 #include "scene/Procedural.h"
 
 namespace specula::scene {
@@ -191,6 +192,21 @@ Scene makeDemoScene()
     return scene;
 }
 
+ScatteredLight scatteredLight(uint32_t index, const glm::vec3& center, float side)
+{
+    const uint32_t k = index * 4u;
+    ScatteredLight s;
+    s.light.type = Light::Type::Point;
+    s.light.range = 4.0f;
+    s.light.intensity = 8.0f; // cd: 8 lux at 1 m
+    s.light.castShadows = false;
+    const float hue = unitHash(k + 3u) * 6.0f;
+    s.light.color = glm::clamp(glm::vec3(std::abs(hue - 3.0f) - 1.0f, 2.0f - std::abs(hue - 2.0f), 2.0f - std::abs(hue - 4.0f)),
+                               0.0f, 1.0f) * 0.7f + 0.3f;
+    s.position = center + glm::vec3((unitHash(k) - 0.5f) * side, 0.3f + 1.2f * unitHash(k + 1u), (unitHash(k + 2u) - 0.5f) * side);
+    return s;
+}
+
 Scene makeManyLightsScene(int lights)
 {
     Scene scene;
@@ -214,26 +230,9 @@ Scene makeManyLightsScene(int lights)
     // One light per 16 m² over a square of side max(20, 4 √n) m; a fixed hash of the light's
     // number places it, so a count always gives the same scene.
     const float side = std::max(20.0f, 4.0f * std::sqrt(float(std::max(lights, 0))));
-    auto hash = [](uint32_t x) {
-        x ^= x >> 16;
-        x *= 0x7feb352du;
-        x ^= x >> 15;
-        x *= 0x846ca68bu;
-        x ^= x >> 16;
-        return float(x >> 8) / float(1u << 24); // [0, 1)
-    };
     for (int i = 0; i < lights; ++i) {
-        const uint32_t k = uint32_t(i) * 4u;
-        Light light;
-        light.type = Light::Type::Point;
-        light.range = 4.0f;
-        light.intensity = 8.0f; // cd: 8 lux at 1 m
-        const float hue = hash(k + 3u) * 6.0f;
-        light.color = glm::clamp(glm::vec3(std::abs(hue - 3.0f) - 1.0f, 2.0f - std::abs(hue - 2.0f), 2.0f - std::abs(hue - 4.0f)),
-                                 0.0f, 1.0f) * 0.7f + 0.3f;
-        light.castShadows = false;
-        const glm::vec3 position((hash(k) - 0.5f) * side, 0.3f + 1.2f * hash(k + 1u), (hash(k + 2u) - 0.5f) * side);
-        addLight(scene, light, position, {0.0f, -1.0f, 0.0f});
+        const ScatteredLight s = scatteredLight(uint32_t(i), glm::vec3(0.0f), side);
+        addLight(scene, s.light, s.position, {0.0f, -1.0f, 0.0f});
     }
     Camera camera;
     camera.yfov = glm::radians(50.0f);

@@ -1,5 +1,7 @@
 #pragma once
 // Built-in scenes that need no file, and the default light rig.
+#include <cstdint>
+
 #include "scene/Scene.h"
 
 namespace specula::scene {
@@ -26,6 +28,15 @@ Scene makeLearnOpenGlIblScene();
 /// light per 16 m², and at least 20 × 20 m): the same deterministic places for the same count.
 /// Camera at (0, 7, 16) looking at the origin, 50° fov, near 0.1, far 150.
 Scene makeManyLightsScene(int lights);
+
+/// Light `index` of a deterministic scatter (the many-lights scene's, the viewer's scatter-lights):
+/// a coloured point light of 8 cd and range 4 m that casts no shadow, placed in a square of side
+/// `side` m around `center`, 0.3–1.5 m above it.
+struct ScatteredLight {
+    Light light;
+    glm::vec3 position;
+};
+ScatteredLight scatteredLight(uint32_t index, const glm::vec3& center, float side);
 
 /// Adds the default rig when a scene has no light: three directional lights (key 3 lux from
 /// the upper left front, fill 1 lux from the right, rim 2 lux from behind), placed relative to

@@ -247,17 +247,6 @@ IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount, int 
     return split;
 }
 
-std::vector<IrradianceSource> takeBrightest(std::vector<IrradianceSource>& sources, int count)
-{
-    const auto luminance = [](const IrradianceSource& s) { return glm::dot(s.flux, glm::vec3(0.2126f, 0.7152f, 0.0722f)); };
-    const size_t n = std::min(sources.size(), size_t(std::max(count, 0)));
-    std::partial_sort(sources.begin(), sources.begin() + ptrdiff_t(n), sources.end(),
-                      [&](const IrradianceSource& a, const IrradianceSource& b) { return luminance(a) > luminance(b); });
-    std::vector<IrradianceSource> bright(sources.begin(), sources.begin() + ptrdiff_t(n));
-    sources.erase(sources.begin(), sources.begin() + ptrdiff_t(n));
-    return bright;
-}
-
 std::vector<glm::vec3> irradianceCube(const std::vector<IrradianceSource>& sources, int size)
 {
     std::vector<glm::vec3> out(size_t(6) * size_t(size) * size_t(size));

@@ -87,11 +87,6 @@ struct IrradianceSplit {
 IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount = kIrradianceBrightSources,
                                 int brightWidth = kIrradianceSourceWidth, int cubeWidth = kIrradianceCubeSourceWidth);
 
-/// Takes the `count` sources of most flux (luminance) out of `sources`, brightest first: shading
-/// sums them per pixel (exactly: no interpolation across their terminators, where a cube's
-/// texels would round the kink of max(0, n·d)), the cube holds the rest.
-std::vector<IrradianceSource> takeBrightest(std::vector<IrradianceSource>& sources, int count);
-
 /// The irradiance cube (shaders/ibl/irradiance.comp bakes it on the GPU; this is its CPU
 /// twin): irradianceAt the centre of each texel of six `size`² faces. Face after face, rows
 /// in t order, RGB.

@@ -10,6 +10,7 @@
 // frame with shadows off: shadows only multiply each light's contribution (lights/shadow.glsl),
 // so the ratio is the shadow term itself, free of the BRDF, the light's falloff and the view.
 #include "GlTestContext.h"
+#include "ShadowScenes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,42 +36,11 @@ using glm::dvec3;
 
 namespace {
 
-// What test_shadows.cpp builds its scenes of (a 20 m floor at y = 0, boxes, spheres, one
-// light), copied rather than shared so that the two files can change apart.
-struct Sphere {
-    glm::vec3 center;
-    float radius;
-};
-struct Box {
-    glm::vec3 min, max;
-};
+using Scene = specula::test::ShadowPrimitives;
+using specula::test::Box;
+using specula::test::Sphere;
 
-struct Scene {
-    float floorSize = 20.0f;
-    std::vector<Box> boxes;
-    std::vector<Sphere> spheres;
-    scene::Light light;
-    glm::vec3 lightPosition{0.0f};
-    glm::vec3 lightDirection{0.0f, -1.0f, 0.0f};
-};
-
-scene::Scene buildScene(const Scene& sc)
-{
-    scene::Scene s;
-    scene::Material material;
-    material.baseColorFactor = glm::vec4(glm::vec3(0.8f), 1.0f);
-    material.metallicFactor = 0.0f;
-    material.roughnessFactor = 0.8f;
-    scene::addShape(s, scene::makePlane(sc.floorSize), material, glm::mat4(1.0f), "floor");
-    for (const Sphere& sp : sc.spheres)
-        scene::addShape(s, scene::makeUvSphere(sp.radius, 128, 64), material, glm::translate(glm::mat4(1.0f), sp.center), "sphere");
-    for (const Box& b : sc.boxes) {
-        const glm::mat4 t = glm::scale(glm::translate(glm::mat4(1.0f), 0.5f * (b.min + b.max)), 0.5f * (b.max - b.min));
-        scene::addShape(s, scene::makeCube(1.0f), material, t, "box");
-    }
-    scene::addLight(s, sc.light, sc.lightPosition, sc.lightDirection);
-    return s;
-}
+scene::Scene buildScene(const Scene& sc) { return specula::test::buildShadowScene(sc); }
 
 // The caster bounds ShadowPass fits the cascades' depth range to: the floor and every caster.
 scene::Bounds casterBounds(const Scene& sc)

@@ -9,6 +9,7 @@
 // be at most 2% of the unshadowed value; in the light, within the shading tests' tolerance.
 // Each case also runs with shadows off and must then fail (the test can tell).
 #include "GlTestContext.h"
+#include "ShadowScenes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,21 +35,11 @@ using glm::dvec3;
 
 namespace {
 
-struct Sphere {
-    glm::vec3 center;
-    float radius;
-};
-struct Box {
-    glm::vec3 min, max;
-};
+using specula::test::Box;
+using specula::test::Sphere;
 
-struct ShadowScene {
-    float floorSize = 20.0f;
-    std::vector<Sphere> spheres;
-    std::vector<Box> boxes;
-    scene::Light light;
-    glm::vec3 lightPosition{0.0f};
-    glm::vec3 lightDirection{0.0f, -1.0f, 0.0f};
+// A scene of primitives and the camera that sees it.
+struct ShadowScene : specula::test::ShadowPrimitives {
     glm::vec3 eye{0.0f, 8.0f, 10.0f};
     glm::vec3 target{0.0f};
     float yfov = glm::radians(50.0f);
@@ -56,8 +47,8 @@ struct ShadowScene {
     int width = 160, height = 120;
 };
 
-const glm::vec3 kBaseColor(0.8f);
-constexpr float kRoughness = 0.8f;
+const glm::vec3 kBaseColor = specula::test::kShadowBaseColor;
+constexpr float kRoughness = specula::test::kShadowRoughness;
 
 // The nearest hit of a ray: t, the primitive (0 floor, then spheres, then boxes), the normal.
 struct Hit {
@@ -119,23 +110,7 @@ Hit intersect(const ShadowScene& sc, const dvec3& o, const dvec3& d)
     return hit;
 }
 
-scene::Scene buildScene(const ShadowScene& sc)
-{
-    scene::Scene s;
-    scene::Material material;
-    material.baseColorFactor = glm::vec4(kBaseColor, 1.0f);
-    material.metallicFactor = 0.0f;
-    material.roughnessFactor = kRoughness;
-    scene::addShape(s, scene::makePlane(sc.floorSize), material, glm::mat4(1.0f), "floor");
-    for (const Sphere& sp : sc.spheres)
-        scene::addShape(s, scene::makeUvSphere(sp.radius, 128, 64), material, glm::translate(glm::mat4(1.0f), sp.center), "sphere");
-    for (const Box& b : sc.boxes) {
-        const glm::mat4 t = glm::scale(glm::translate(glm::mat4(1.0f), 0.5f * (b.min + b.max)), 0.5f * (b.max - b.min));
-        scene::addShape(s, scene::makeCube(1.0f), material, t, "box");
-    }
-    scene::addLight(s, sc.light, sc.lightPosition, sc.lightDirection);
-    return s;
-}
+scene::Scene buildScene(const ShadowScene& sc) { return specula::test::buildShadowScene(sc); }
 
 struct Comparison {
     int umbra = 0, umbraWrong = 0; ///< interior shadowed pixels, and those brighter than 2% of lit
