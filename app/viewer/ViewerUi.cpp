@@ -365,6 +365,11 @@ void environmentPanel(Viewer& viewer)
     if (ImGui::Button("load")) viewer.openFile(path.data());
     ImGui::TextDisabled("or drop a .hdr / .exr on the window");
     ImGui::Checkbox("image-based lighting", &e.lighting);
+    if (ImGui::BeginCombo("specular", render::iblSpecularName(e.specular))) {
+        for (auto mode : {render::IblSpecular::SplitSum, render::IblSpecular::Importance})
+            if (ImGui::Selectable(render::iblSpecularName(mode), mode == e.specular)) e.specular = mode;
+        ImGui::EndCombo();
+    }
     ImGui::DragFloat("intensity", &e.intensity, 0.01f, 0.0f, 1e4f);
     ImGui::SliderFloat("rotation", &e.rotationDegrees, -180.0f, 180.0f, "%.0f deg");
     ImGui::Checkbox("skybox", &e.skybox);

@@ -15,6 +15,9 @@
 #include "../lights/punctual.glsl"
 #if defined(IBL)
 #include "../ibl/ibl.glsl"
+#if defined(IBL_IMPORTANCE)
+#include "../ibl/importance.glsl"
+#endif
 #endif
 
 #define SPECULA_FRAGMENT_STAGE
@@ -191,7 +194,13 @@ void main()
     // What the specular lobe reflects, the diffuse lobe below it cannot: 1 - E keeps a white
     // dielectric in a white furnace at or below the environment's radiance.
     vec3 diffuseIbl = irradianceCube(toEnvironment(n)) * surface.diffuseColor * INV_PI * (1.0 - specularAlbedo);
+#if defined(IBL_IMPORTANCE)
+    // The lobe integrated per pixel with this material's BRDF (ibl/importance.glsl); the
+    // diffuse lobe keeps the split sum's 1 - E, E the DFG table's.
+    vec3 specularIbl = importanceSampledSpecular(surface, n, v, iblRoughness) * energyCompensation;
+#else
     vec3 specularIbl = prefilteredRadiance(specularDominantDirection(n, r, iblRoughness), iblRoughness) * specularAlbedo;
+#endif
     float specularAo = specularOcclusion(NoV, occlusion, perceptualRoughness);
 #if defined(HAS_NORMAL_TEXTURE)
     specularAo *= horizonFade(r, flip ? -normalize(vNormal) : normalize(vNormal));

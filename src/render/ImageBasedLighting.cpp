@@ -398,7 +398,7 @@ const gl::Texture& ImageBasedLighting::dfg(gl::State& state, const ResolvedShadi
     gl::Texture& lut = r.luts[dfgKey(variant)];
     if (lut) return lut;
     // The defines are the forward pass's for this D, G and F (one table, shading/VariantKey).
-    const std::vector<std::string> defines = ForwardVariant::make(0, variant, DebugView::None, false, false, false, false).defines();
+    const std::vector<std::string> defines = ForwardVariant::make(0, variant, DebugView::None, IblVariant::None, false, false, false).defines();
     const std::string name = dfgName(variant);
     const std::string label = "dfg " + name;
     fs::path file;

@@ -24,6 +24,18 @@ std::optional<BrdfGeometry> parseBrdfGeometry(std::string_view name)
     return scene::parseBrdfGeometryName(name);
 }
 
+const char* iblSpecularName(IblSpecular mode)
+{
+    return mode == IblSpecular::Importance ? "importance" : "split-sum";
+}
+
+std::optional<IblSpecular> parseIblSpecular(std::string_view name)
+{
+    if (name == "split-sum") return IblSpecular::SplitSum;
+    if (name == "importance") return IblSpecular::Importance;
+    return std::nullopt;
+}
+
 bool isDoomFrame(const FrameSettings& s)
 {
     return s.materialOverride.model == scene::ShadingModel::Doom && !isMaterialDebugView(s.debugView);
@@ -174,10 +186,10 @@ struct Renderer::Impl {
 
 Renderer::Renderer() : mImpl(std::make_unique<Impl>())
 {
-    // The forward pass binds units up to SPECULA_UNIT_IRRADIANCE (shaders/shared/Bindings.h).
-    if (gl::maxTextureUnits() <= SPECULA_UNIT_IRRADIANCE)
+    // The forward pass binds units up to SPECULA_UNIT_ENVIRONMENT_CUBE (shaders/shared/Bindings.h).
+    if (gl::maxTextureUnits() <= SPECULA_UNIT_ENVIRONMENT_CUBE)
         throw Error("this OpenGL implementation has {} texture units; Specula needs {}", gl::maxTextureUnits(),
-                    SPECULA_UNIT_IRRADIANCE + 1);
+                    SPECULA_UNIT_ENVIRONMENT_CUBE + 1);
 }
 Renderer::~Renderer() = default;
 

@@ -45,6 +45,14 @@ enum class MaterialParameter {
 };
 constexpr int kMaterialParameterCount = int(MaterialParameter::SectorLight) + 1;
 
+/// How the specular lobe integrates image-based light (docs/ibl.md).
+enum class IblSpecular {
+    SplitSum,   ///< prefiltered radiance × the DFG table (Karis 2013): one fetch, assumes n = v = r
+    Importance, ///< per pixel, filtered importance sampling with the full BRDF (Colbert & Křivánek 2007)
+};
+const char* iblSpecularName(IblSpecular mode);
+std::optional<IblSpecular> parseIblSpecular(std::string_view name);
+
 /// How the environment lights and shows in a frame (its content is set with setEnvironment).
 struct EnvironmentView {
     bool lighting = true;         ///< image-based lighting on (when an environment is set)
@@ -52,6 +60,7 @@ struct EnvironmentView {
     float rotationDegrees = 0.0f; ///< turns the environment about +Y
     bool skybox = true;           ///< draw the environment behind the scene
     float skyboxBlur = 0.0f;      ///< perceptual roughness of the skybox (0 = sharp)
+    IblSpecular specular = IblSpecular::SplitSum;
 };
 
 /// Which lights each shading point evaluates (docs/clustered-shading.md).

@@ -179,7 +179,7 @@ SceneDocument loadSceneText(const std::string& text, const fs::path& path, const
         parseCamera(*camera, scene);
         document.render.cameraExposure = parseCameraExposure(*camera);
     }
-    if (const auto environment = root.object("environment", {"color", "file", "intensity", "rotation"}))
+    if (const auto environment = root.object("environment", {"color", "file", "intensity", "rotation", "ibl", "sun"}))
         document.environment = parseEnvironment(*environment, files);
     if (const auto render = root.object("render", {"width", "height", "msaa", "exposure", "tonemap", "brdfG", "shading",
                                                    "defaultLights", "ev100"})) {

@@ -40,6 +40,11 @@ struct EnvironmentSettings {
     std::string file;       ///< path resolved against the scene file's directory
     float intensity = 1.0f;
     float rotationDegrees = 0.0f;
+    /// "ibl": how the specular lobe integrates the environment, "split-sum" or "importance"
+    /// (render::IblSpecular); unset: the app's default.
+    std::optional<std::string> ibl;
+    /// "sun": "extract" takes the map's sun out as a directional light, "keep" (default) leaves it.
+    std::optional<std::string> sun;
     /// With neither `file` nor `color`: the procedural sky, or (false) no environment. No
     /// scene-file key: built-in scenes without one (a lighting tutorial, an indoor level) say so.
     bool skyByDefault = true;

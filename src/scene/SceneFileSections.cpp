@@ -273,6 +273,8 @@ EnvironmentSettings parseEnvironment(const Object& object, const Files& files)
     }
     environment.intensity = object.nonNegative("intensity").value_or(environment.intensity);
     environment.rotationDegrees = object.number("rotation", environment.rotationDegrees);
+    environment.ibl = object.choice("ibl", {"split-sum", "importance"});
+    environment.sun = object.choice("sun", {"extract", "keep"});
     return environment;
 }
 

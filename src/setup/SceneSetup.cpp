@@ -1,5 +1,7 @@
 #include "setup/SceneSetup.h"
 
+#include "shading/SunExtraction.h"
+
 #include <cmath>
 #include <cstdio>
 #include <type_traits>
@@ -8,6 +10,7 @@
 #include "core/Error.h"
 #include "core/Log.h"
 #include "shading/CameraExposure.h"
+#include "shading/SunExtraction.h"
 #include "scene/BuiltinScenes.h"
 #include "scene/DemoScenes.h"
 
@@ -149,6 +152,12 @@ render::FrameSettings resolveSettings(const scene::SceneDocument& document, cons
         throw Error("--env-intensity must be a finite number, not negative");
     if (!std::isfinite(s.environment.rotationDegrees)) throw Error("--env-rotation must be a finite number");
     if (!std::isfinite(s.exposureEv)) throw Error("--exposure must be a finite number");
+    s.environment.specular = options.iblDefault;
+    if (const std::optional<std::string>& ibl = options.ibl ? options.ibl : document.environment.ibl) {
+        const auto mode = render::parseIblSpecular(*ibl);
+        if (!mode) throw Error("--ibl must be split-sum or importance (got '{}')", *ibl);
+        s.environment.specular = *mode;
+    }
     if (options.skybox) {
         const std::string& sky = *options.skybox;
         float blur = 0.0f;
@@ -196,7 +205,9 @@ glm::vec3 parseColor(const std::string& text)
 
 } // namespace
 
-std::optional<render::EnvironmentMap> loadEnvironment(const scene::SceneDocument& document, const FrameOptions& options)
+namespace {
+
+std::optional<render::EnvironmentMap> loadMap(const scene::SceneDocument& document, const FrameOptions& options)
 {
     if (options.envColor) return render::constantEnvironment(parseColor(*options.envColor));
     if (options.env) {
@@ -208,6 +219,36 @@ std::optional<render::EnvironmentMap> loadEnvironment(const scene::SceneDocument
     if (document.environment.color) return render::constantEnvironment(*document.environment.color);
     if (!document.environment.skyByDefault) return std::nullopt;
     return render::proceduralSky();
+}
+
+} // namespace
+
+std::optional<render::EnvironmentMap> loadEnvironment(scene::SceneDocument& document, const FrameOptions& options)
+{
+    std::optional<render::EnvironmentMap> map = loadMap(document, options);
+    const std::string sunMode = options.envSun.value_or(document.environment.sun.value_or("keep"));
+    if (sunMode != "extract" && sunMode != "keep") throw Error("--env-sun must be extract or keep (got '{}')", sunMode);
+    if (!map || sunMode == "keep") return map;
+    const std::optional<render::ExtractedSun> sun = render::extractSun(*map);
+    if (!sun) {
+        log::info("--env-sun extract: the environment has no sun (no compact region far brighter than the rest)");
+        return map;
+    }
+    // World direction: the environment turned by its rotation; the light points away from the sun.
+    const float rotation = options.envRotation.value_or(document.environment.rotationDegrees);
+    const float intensity = options.envIntensity.value_or(document.environment.intensity);
+    const glm::vec3 toSun = render::environmentRotation(rotation) * sun->direction;
+    scene::Light light;
+    light.name = "environment sun";
+    light.type = scene::Light::Type::Directional;
+    const float lux = std::max({sun->illuminance.r, sun->illuminance.g, sun->illuminance.b});
+    light.intensity = lux * intensity;
+    light.color = lux > 0.0f ? sun->illuminance / lux : glm::vec3(1.0f);
+    light.angularDiameter = sun->angularDiameter;
+    scene::addLight(document.scene, light, glm::vec3(0.0f), -toSun);
+    log::info("--env-sun extract: sun of {:.0f} lux, {:.2f}° across, {} texels, now a directional light", light.intensity,
+              glm::degrees(sun->angularDiameter), sun->texels);
+    return map;
 }
 
 render::BakeSettings resolveBakeSettings(const FrameOptions& options)

@@ -32,6 +32,11 @@ struct FrameOptions {
     std::optional<float> envIntensity;
     std::optional<float> envRotation;
     std::optional<std::string> skybox;
+    std::optional<std::string> envSun; ///< extract | keep (--env-sun), over the scene file's
+    std::optional<std::string> ibl; ///< split-sum | importance (--ibl), over the scene file's
+    /// The app's own default where neither says: importance for one offline frame (render),
+    /// the split sum for interactive frames (docs/ibl.md has the measurements).
+    render::IblSpecular iblDefault = render::IblSpecular::SplitSum;
     std::string bakePreset = "default";
     bool noCache = false;
     std::optional<std::string> energyCompensation; ///< on (default) | off
@@ -60,8 +65,11 @@ render::FrameSettings resolveSettings(const scene::SceneDocument& document, cons
 
 /// The environment the frame asks for: none, or a map (file, constant colour, procedural sky).
 /// Options over scene file; with neither, the procedural sky unless the document says it wants
-/// none (EnvironmentSettings::skyByDefault). Throws Error for bad files or values.
-std::optional<render::EnvironmentMap> loadEnvironment(const scene::SceneDocument& document, const FrameOptions& options);
+/// none (EnvironmentSettings::skyByDefault). With --env-sun extract (or the scene file's
+/// "sun": "extract"), a sun found in the map is taken out of it and added to `document` as a
+/// directional light (shading/SunExtraction.h) of the environment's intensity and rotation.
+/// Throws Error for bad files or values.
+std::optional<render::EnvironmentMap> loadEnvironment(scene::SceneDocument& document, const FrameOptions& options);
 /// Bake settings and cache directory for the frame (--bake-preset, --no-cache).
 render::BakeSettings resolveBakeSettings(const FrameOptions& options);
 std::filesystem::path cacheDirectory(const FrameOptions& options);

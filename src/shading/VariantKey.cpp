@@ -16,6 +16,7 @@ constexpr uint64_t kSsao = 1u << 11;
 constexpr uint64_t kDoomIndexed = 1u << 12;
 constexpr uint64_t kShadows = 1u << 13;
 constexpr uint64_t kLightsAll = 1u << 14;
+constexpr uint64_t kIblImportance = 1u << 15;
 constexpr uint64_t kShadowDirectional = uint64_t(1) << 32, kShadowSpot = uint64_t(1) << 33, kShadowPoint = uint64_t(1) << 34;
 constexpr int kShadowFilterShift = 35, kShadowTapsShift = 37;
 constexpr int kDebugShift = 16, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
@@ -64,6 +65,7 @@ constexpr std::array kTable = {
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::Cascades), "DEBUG_VIEW_CASCADES", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::LightCount), "DEBUG_VIEW_LIGHT_COUNT", K::DebugView},
     VariantDefine{kIbl, kIbl, "IBL", K::FrameFeature},
+    VariantDefine{kIblImportance, kIblImportance, "IBL_IMPORTANCE", K::FrameFeature},
     VariantDefine{kEnergyCompensation, kEnergyCompensation, "ENERGY_COMPENSATION", K::FrameFeature},
     VariantDefine{kSsao, kSsao, "SSAO", K::FrameFeature},
     VariantDefine{kDoomIndexed, kDoomIndexed, "DOOM_INDEXED", K::FrameFeature},
@@ -87,7 +89,7 @@ constexpr std::array kTable = {
     VariantDefine{SPECULA_MATERIAL_ALPHA_BLEND, SPECULA_MATERIAL_ALPHA_BLEND, "ALPHA_BLEND", K::MaterialFeature},
     VariantDefine{SPECULA_MATERIAL_USE_VERTEX_COLOR, SPECULA_MATERIAL_USE_VERTEX_COLOR, "VERTEX_COLOR", K::MaterialFeature},
 };
-static_assert((kFeatureMask & (kIbl | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
+static_assert((kFeatureMask & (kIbl | kIblImportance | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
 static_assert(uint64_t(DebugView::LightCount) < (uint64_t(1) << 4)); // the debug field's 4 bits
 static_assert((kDiffuseMask & (kShadowDirectional | kShadowSpot | kShadowPoint | kShadowFilterMask | kShadowTapsMask)) == 0);
 
@@ -103,7 +105,7 @@ bool isMaterialDebugView(DebugView view)
     return view != DebugView::None && view != DebugView::Ssao && view != DebugView::Bloom && view != DebugView::ShadowAtlas;
 }
 
-ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& shading, DebugView debugView, bool ibl,
+ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& shading, DebugView debugView, IblVariant ibl,
                                     bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows,
                                     bool allLights)
 {
@@ -114,7 +116,8 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
                at(kFresnelShift, shading.fresnel) | at(kDiffuseShift, shading.diffuse);
     }
     if (isMaterialDebugView(debugView)) key |= at(kDebugShift, debugView);
-    if (ibl) key |= kIbl;
+    if (ibl != IblVariant::None) key |= kIbl;
+    if (ibl == IblVariant::Importance) key |= kIblImportance;
     if (energyCompensation) key |= kEnergyCompensation;
     if (ssao) key |= kSsao;
     if (doomIndexed) key |= kDoomIndexed;

@@ -34,6 +34,10 @@ struct ShadowVariant {
     bool operator==(const ShadowVariant&) const = default;
 };
 
+/// Image-based light in the forward program: none, the split sum (IBL), or the split sum's
+/// diffuse with the specular lobe importance-sampled per pixel (IBL + IBL_IMPORTANCE).
+enum class IblVariant : uint8_t { None, SplitSum, Importance };
+
 /// Every row, in the order the defines are emitted.
 std::span<const VariantDefine> forwardVariantTable();
 
@@ -46,7 +50,7 @@ struct ForwardVariant {
     /// the frame's shadow maps (SHADOWS and SHADOW_*: lights/shadow.glsl samples them).
     /// `allLights`: every light at every shading point, no cluster lists (LIGHTS_ALL, the
     /// brute-force frame).
-    static ForwardVariant make(uint32_t features, const ResolvedShading& shading, DebugView debugView, bool ibl,
+    static ForwardVariant make(uint32_t features, const ResolvedShading& shading, DebugView debugView, IblVariant ibl,
                                bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows = {},
                                bool allLights = false);
 

@@ -105,3 +105,25 @@ TEST(CliEnvironment, ExrEnvironmentRenders)
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(fs::exists(dir + "/out.png"));
 }
+
+TEST(CliEnvironment, SunExtractionAndImportanceSampledSpecular)
+{
+    // --env-sun extract turns park_1k's sun into a directional light (SunExtraction's tests
+    // check its numbers); --ibl importance renders; bad values of either are one-line errors.
+    const std::string dir = tempDir("envsun");
+    const auto sun = runCli("render --env " + kEnv + "park_1k.hdr --env-sun extract --ibl importance --no-cache --width 64 "
+                            "--height 48 -o " + dir + "/sun.png");
+    EXPECT_EQ(sun.exitCode, 0) << sun.err;
+    EXPECT_NE(sun.err.find("now a directional light"), std::string::npos) << sun.err;
+    EXPECT_TRUE(fs::exists(dir + "/sun.png"));
+    const auto noSun = runCli("render --env " + kEnv + "studio_1k.hdr --env-sun extract --no-cache --width 32 --height 24 -o " +
+                              dir + "/studio.png");
+    EXPECT_EQ(noSun.exitCode, 0) << noSun.err;
+    EXPECT_NE(noSun.err.find("has no sun"), std::string::npos) << noSun.err;
+    for (const std::string bad : {"--env-sun maybe", "--ibl fancy"}) {
+        const auto r = runCli("render " + bad + " -o " + dir + "/bad.png");
+        EXPECT_NE(r.exitCode, 0) << bad;
+        EXPECT_EQ(r.errorLines(), 1) << r.err;
+        EXPECT_FALSE(fs::exists(dir + "/bad.png"));
+    }
+}

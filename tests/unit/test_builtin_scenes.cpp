@@ -25,7 +25,7 @@ TEST(BuiltinScenes, TheirLookIsData)
     EXPECT_EQ(setup::resolveSettings(demo, none).tonemap, render::Tonemap::Neutral);
 
     // The lighting tutorial: Reinhard, Schlick-GGX, ambient 0.03 × albedo, no environment, no rig.
-    const scene::SceneDocument lighting = *scene::builtinScene("learnopengl");
+    scene::SceneDocument lighting = *scene::builtinScene("learnopengl");
     const render::FrameSettings s = setup::resolveSettings(lighting, none);
     EXPECT_EQ(s.ambient, glm::vec3(0.03f));
     EXPECT_EQ(s.tonemap, render::Tonemap::Reinhard);
@@ -43,7 +43,7 @@ TEST(BuiltinScenes, TheirLookIsData)
     EXPECT_EQ(setup::resolveSettings(ibl, none).ambient, glm::vec3(0.0f));
 
     // The Doom level is indoors: no sky; its frame is the Doom model's.
-    const scene::SceneDocument doom = *scene::builtinScene("doom");
+    scene::SceneDocument doom = *scene::builtinScene("doom");
     EXPECT_FALSE(setup::loadEnvironment(doom, none).has_value());
     EXPECT_EQ(setup::resolveSettings(doom, none).materialOverride.model, scene::ShadingModel::Doom);
 }

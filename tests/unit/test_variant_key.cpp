@@ -16,13 +16,16 @@ TEST(VariantKey, DefinesFollowTheTable)
     s.geometry = scene::BrdfGeometry::SchlickGGX;
     s.diffuse = scene::BrdfDiffuse::Burley;
     const ForwardVariant v = ForwardVariant::make(SPECULA_MATERIAL_HAS_NORMAL_TEXTURE | SPECULA_MATERIAL_ALPHA_MASK, s,
-                                                  DebugView::None, true, true, false, false);
+                                                  DebugView::None, IblVariant::SplitSum, true, false, false);
     EXPECT_EQ(v.defines(), (std::vector<std::string>{"BRDF_G_SCHLICK_GGX", "BRDF_DIFFUSE_BURLEY", "IBL", "ENERGY_COMPENSATION",
                                                      "HAS_NORMAL_TEXTURE", "ALPHA_MASK"}));
     EXPECT_EQ(v.shading(), s);
     EXPECT_FALSE(v.debugView());
+    // The importance-sampled specular keeps the split sum's IBL define and adds its own.
+    EXPECT_EQ(ForwardVariant::make(0, {}, DebugView::None, IblVariant::Importance, false, false, false).defines(),
+              (std::vector<std::string>{"IBL", "IBL_IMPORTANCE"}));
     // The default: the glTF BRDF, no feature, no define at all.
-    EXPECT_TRUE(ForwardVariant::make(0, {}, DebugView::None, false, false, false, false).defines().empty());
+    EXPECT_TRUE(ForwardVariant::make(0, {}, DebugView::None, IblVariant::None, false, false, false).defines().empty());
 }
 
 TEST(VariantKey, EveryChoiceRoundTripsAndIsItsOwnKey)
@@ -36,7 +39,7 @@ TEST(VariantKey, EveryChoiceRoundTripsAndIsItsOwnKey)
                 s.model = scene::ShadingModel(model);
                 s.geometry = scene::BrdfGeometry(g);
                 s.distribution = scene::BrdfDistribution(d);
-                const ForwardVariant v = ForwardVariant::make(0, s, DebugView::None, false, false, false, false);
+                const ForwardVariant v = ForwardVariant::make(0, s, DebugView::None, IblVariant::None, false, false, false);
                 if (s.model == scene::ShadingModel::Pbr) {
                     EXPECT_EQ(v.shading(), s);
                     ++count;
@@ -53,7 +56,7 @@ TEST(VariantKey, EveryChoiceRoundTripsAndIsItsOwnKey)
 
 TEST(VariantKey, MaterialDebugViewsSetTheirDefineOthersDoNot)
 {
-    const auto view = [](DebugView d) { return ForwardVariant::make(0, {}, d, false, false, false, false); };
+    const auto view = [](DebugView d) { return ForwardVariant::make(0, {}, d, IblVariant::None, false, false, false); };
     EXPECT_EQ(view(DebugView::Normal).defines(), (std::vector<std::string>{"DEBUG_VIEW_NORMAL"}));
     EXPECT_TRUE(view(DebugView::Normal).debugView());
     EXPECT_TRUE(view(DebugView::Ssao).defines().empty()) << "the SSAO view is a pass of its own";
@@ -63,7 +66,7 @@ TEST(VariantKey, MaterialDebugViewsSetTheirDefineOthersDoNot)
 
 TEST(VariantKey, ShadowsCompileInOnlyTheKindsAndFilterTheFrameUses)
 {
-    const auto with = [](const ShadowVariant& s) { return ForwardVariant::make(0, {}, DebugView::None, false, false, false, false, s).defines(); };
+    const auto with = [](const ShadowVariant& s) { return ForwardVariant::make(0, {}, DebugView::None, IblVariant::None, false, false, false, s).defines(); };
     using V = std::vector<std::string>;
     EXPECT_TRUE(with({}).empty()) << "no shadowed light: no SHADOWS variant, whatever the filter";
     EXPECT_TRUE(with({.filter = 2, .taps = 32}).empty());

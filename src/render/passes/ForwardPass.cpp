@@ -33,6 +33,12 @@ bool iblOn(const FrameContext& frame)
     return frame.stores.ibl.hasEnvironment() && frame.settings.environment.lighting;
 }
 
+IblVariant iblVariant(const FrameContext& frame)
+{
+    if (!iblOn(frame)) return IblVariant::None;
+    return frame.settings.environment.specular == IblSpecular::Importance ? IblVariant::Importance : IblVariant::SplitSum;
+}
+
 /// Writes one field of the environment block and uploads it, if it changed. The CPU copy
 /// always mirrors the buffer (made from it, and every edit uploaded), so comparing with it is
 /// comparing with what the GPU holds.
@@ -95,7 +101,7 @@ struct ForwardPass::Impl {
         const FrameSettings& s = frame.settings;
         const ResolvedShading shading = resolveShading(s.materialOverride, s.brdfGeometry, features);
         const ForwardVariant variant =
-            ForwardVariant::make(features, shading, s.debugView, iblOn(frame), s.energyCompensation, s.ssao.enabled, isDoomFrame(s),
+            ForwardVariant::make(features, shading, s.debugView, iblVariant(frame), s.energyCompensation, s.ssao.enabled, isDoomFrame(s),
                                  shadows, allLights);
         auto it = programs.find(variant.key);
         if (it != programs.end()) return it->second;
@@ -197,6 +203,9 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
                 state.bindSampler(SPECULA_UNIT_PREFILTERED, nullptr);
                 state.bindTexture(SPECULA_UNIT_IRRADIANCE, stores.ibl.irradiance());
                 state.bindSampler(SPECULA_UNIT_IRRADIANCE, nullptr);
+                // The importance-sampled specular reads the unfiltered cube's box mips (ibl/importance.glsl).
+                state.bindTexture(SPECULA_UNIT_ENVIRONMENT_CUBE, stores.ibl.cube());
+                state.bindSampler(SPECULA_UNIT_ENVIRONMENT_CUBE, nullptr);
                 stores.environment.bind(SPECULA_BINDING_ENVIRONMENT);
             }
             stores.lights.bind(state);

@@ -1,0 +1,51 @@
+#pragma once
+// A converged Monte Carlo reference of the rendering equation at a surface point lit by an
+// environment map only: L_o(v) = ∫ f(l, v) L(l) (n·l) dω over the hemisphere, with
+//   - the glTF BRDF of shading/Brdf (its lobes: (1 - F) diffuse + F D V), the specular lobe
+//     scaled by the renderer's multiple-scattering compensation (given, computed by the caller
+//     from an independent CPU estimate of E);
+//   - L the full-resolution map, looked up bilinearly (EnvironmentMap::sample);
+//   - multiple importance sampling (Veach 1997, balance heuristic) of the BRDF (GGX half
+//     vectors and cosine-weighted directions) and of the map (texels by luminance × solid
+//     angle, then uniform in φ and cos θ within the texel).
+// Nothing of the GPU's bake enters it: it is what the image-based lighting approximates.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shading/Brdf.h"
+#include "shading/EnvironmentMap.h"
+
+namespace specula::test {
+
+/// Directions distributed as the map's luminance, with their solid-angle pdf.
+class EnvironmentSampler {
+public:
+    explicit EnvironmentSampler(const render::EnvironmentMap& map);
+    /// A direction for the point (u1, u2, u3) of the unit cube, and its pdf (1/sr).
+    glm::dvec3 sample(double u1, double u2, double u3, double& pdf) const;
+    double pdf(const glm::dvec3& direction) const;
+
+private:
+    int mWidth = 0, mHeight = 0;
+    std::vector<double> mRowCdf;    // mHeight + 1 entries, 0 .. 1
+    std::vector<double> mColumnCdf; // per row, mWidth + 1 entries, 0 .. 1
+    std::vector<double> mRowWeight; // each row's probability
+    std::vector<double> mTexelProbability;
+};
+
+struct ReferenceSample {
+    glm::dvec3 radiance{0.0};
+    /// Standard error of the estimate over its mean, in luminance (from independent batches).
+    double relativeError = 0.0;
+};
+
+/// L_o(v) at normal n for `surface` under `map`, with `samples` samples of each strategy.
+/// A perceptual roughness below 1e-3 makes the specular lobe the mirror (its delta integrated
+/// exactly: F(n·v) L(r)); the diffuse lobe is then sampled by the cosine and the map.
+ReferenceSample referenceRadiance(const render::brdf::Surface& surface, const glm::dvec3& n, const glm::dvec3& v,
+                                  const render::EnvironmentMap& map, const EnvironmentSampler& sampler,
+                                  const glm::dvec3& specularCompensation, int samples, uint64_t seed);
+
+} // namespace specula::test
