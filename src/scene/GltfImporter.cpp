@@ -375,8 +375,8 @@ std::string_view jsonText(const std::vector<unsigned char>& bytes, bool binary)
     return {chars + 20, length};
 }
 
-/// When tinygltf rejects a file, an unsupported required extension (Draco, say) is usually the
-/// real reason: its data does not parse the way tinygltf expects. Name it if there is one.
+/// When tinygltf rejects a file, an unsupported required extension is usually the real reason:
+/// its data does not parse the way tinygltf expects. Name it if there is one.
 std::string unsupportedRequiredExtension(std::string_view json)
 {
     const auto document = nlohmann::json::parse(json.begin(), json.end(), nullptr, /*allow_exceptions*/ false);

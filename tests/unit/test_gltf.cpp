@@ -1249,6 +1249,27 @@ TEST(GltfCompression, MeshoptQuantizedModelDecodesToItsOriginalsVertices)
                 positionTolerance, e.normal, e.uv);
 }
 
+TEST(GltfCompression, MeshoptInAGltfWithAnExternalBuffer)
+{
+    // The same file as .gltf + .bin: the fallback buffer has no uri, which tinygltf refuses in a
+    // .gltf unless the importer stands in for it.
+    TempDir dir;
+    const std::string glb = readFile(kTestAssets / "bunny_meshopt.glb");
+    uint32_t jsonLength = 0, binLength = 0;
+    std::memcpy(&jsonLength, glb.data() + 12, 4);
+    std::memcpy(&binLength, glb.data() + 20 + jsonLength, 4);
+    json document = json::parse(glb.substr(20, jsonLength));
+    document["buffers"][0]["uri"] = "bunny.bin";
+    writeFile(dir / "bunny.bin", glb.substr(20 + jsonLength + 8, binLength));
+    writeFile(dir / "bunny.gltf", document.dump());
+    Scene fromGltf;
+    ASSERT_NO_THROW(fromGltf = loadGltf(dir / "bunny.gltf"));
+    const Scene fromGlb = loadGltf(kTestAssets / "bunny_meshopt.glb");
+    const auto a = worldVertices(fromGltf), b = worldVertices(fromGlb);
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i].position, b[i].position) << i;
+}
+
 TEST(GltfCompression, WebpTextureDecodes)
 {
     // A lossy 512² WebP of the logo's 2048² JPEG: the same picture, so the same mean colour
