@@ -248,6 +248,11 @@ void materialsPanel(Viewer& viewer)
         }
         ImGui::EndCombo();
     }
+    if (model == scene::ShadingModel::Unlit)
+        ImGui::TextWrapped("unlit (glTF KHR_materials_unlit): shows base colour x texture x vertex colour%s; lights, "
+                           "the environment and the BRDF below do not apply",
+                           viewer.material(m).emissiveTexture.valid() || viewer.material(m).emissiveFactor != glm::vec3(0.0f)
+                               ? " + emission" : "");
     // The BRDF terms of the physically based model; unset = the frame's choice.
     scene::MaterialShading terms = shading;
     bool termsChanged = false;

@@ -21,6 +21,10 @@ vec3 debugBytes(vec3 value)
 // first light of the frame (black without lights and where it does not reach).
 vec3 debugBrdfTerm(vec3 baseColor, float metallic, float perceptualRoughness, vec3 n, vec3 v)
 {
+#if defined(SHADING_UNLIT)
+    // An unlit material (KHR_materials_unlit) has no BRDF: no light reaches its colour.
+    return vec3(0.0);
+#endif
     if (frameLightCount() == 0u) return vec3(0.0);
     vec3 l;
     lightIlluminance(lightAt(0u), vWorldPosition, l);

@@ -19,12 +19,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Extensions we can honour when a file lists them as required.
-constexpr std::string_view kSupportedRequiredExtensions[] = {
+/// Extensions we honour, so a file may list them as required and is not warned about them.
+constexpr std::string_view kSupportedExtensions[] = {
+    "EXT_meshopt_compression",    // bufferViews decoded with meshoptimizer (GltfCompression.cpp)
+    "EXT_texture_webp",           // WebP images decoded with libwebp (GltfMaterials.cpp)
+    "KHR_draco_mesh_compression", // primitives decoded with Draco (GltfCompression.cpp)
     "KHR_lights_punctual",
     "KHR_materials_emissive_strength",
     "KHR_materials_ior",      // F0 of the dielectric part (Material::ior)
     "KHR_materials_specular", // factors; its textures are ignored
+    "KHR_materials_unlit",    // the unlit shading model (Material::shading)
     "KHR_mesh_quantization", // integer attributes: the accessor reader handles every component type
     "KHR_texture_transform",
     // Textures carry a DDS source in the extension; we use their plain `source` when there is
@@ -32,6 +36,22 @@ constexpr std::string_view kSupportedRequiredExtensions[] = {
     // it without using any texture at all.
     "MSFT_texture_dds",
 };
+
+bool supported(std::string_view name)
+{
+    return std::find(std::begin(kSupportedExtensions), std::end(kSupportedExtensions), name) !=
+           std::end(kSupportedExtensions);
+}
+
+/// Why a required extension is refused: the extension, and for the ones people ship that we
+/// cannot read, why not.
+std::string refusal(std::string_view name)
+{
+    if (name == "KHR_texture_basisu")
+        return "requires the unsupported extension KHR_texture_basisu (KTX2 / Basis Universal textures: Debian 12 "
+               "packages no KTX library to decode them)";
+    return fmt::format("requires the unsupported extension {}", name);
+}
 
 constexpr uint32_t kGlbMagic = 0x46546C67;     // "glTF", little endian
 constexpr uint32_t kGlbJsonChunk = 0x4E4F534A; // "JSON"
@@ -128,10 +148,22 @@ void Importer::checkVersion() const
 
 void Importer::checkRequiredExtensions() const
 {
-    for (const std::string& name : mModel.extensionsRequired) {
-        if (std::find(std::begin(kSupportedRequiredExtensions), std::end(kSupportedRequiredExtensions), name) ==
-            std::end(kSupportedRequiredExtensions))
-            fail("requires the unsupported extension {}", name);
+    for (const std::string& name : mModel.extensionsRequired)
+        if (!supported(name)) fail("{}", refusal(name));
+}
+
+void Importer::warnIgnoredExtensions()
+{
+    std::vector<std::string_view> warned;
+    for (const std::string& name : mModel.extensionsUsed) {
+        if (supported(name) || std::find(warned.begin(), warned.end(), name) != warned.end()) continue;
+        warned.push_back(name);
+        if (name == "KHR_texture_basisu") {
+            warn("uses KHR_texture_basisu (KTX2 / Basis Universal textures), which Specula cannot decode (Debian 12 "
+                 "packages no KTX library); textures without a PNG or JPEG fallback are drawn without it");
+        } else {
+            warn("uses the extension {}, which Specula does not support; it is ignored", name);
+        }
     }
 }
 
@@ -343,8 +375,8 @@ std::string_view jsonText(const std::vector<unsigned char>& bytes, bool binary)
     return {chars + 20, length};
 }
 
-/// When tinygltf rejects a file, an unsupported required extension (Draco, say) is usually the
-/// real reason: its data does not parse the way tinygltf expects. Name it if there is one.
+/// When tinygltf rejects a file, an unsupported required extension is usually the real reason:
+/// its data does not parse the way tinygltf expects. Name it if there is one.
 std::string unsupportedRequiredExtension(std::string_view json)
 {
     const auto document = nlohmann::json::parse(json.begin(), json.end(), nullptr, /*allow_exceptions*/ false);
@@ -354,9 +386,7 @@ std::string unsupportedRequiredExtension(std::string_view json)
     for (const auto& name : *it) {
         if (!name.is_string()) continue;
         const auto& text = name.get_ref<const std::string&>();
-        if (std::find(std::begin(kSupportedRequiredExtensions), std::end(kSupportedRequiredExtensions), text) ==
-            std::end(kSupportedRequiredExtensions))
-            return text;
+        if (!supported(text)) return text;
     }
     return {};
 }
@@ -452,6 +482,104 @@ void checkDeclarations(const std::string& file, std::string_view json, const fs:
         for (size_t i = 0; i < images->size(); ++i)
             if ((*images)[i].is_object()) checkUri((*images)[i], "images", i);
     }
+}
+
+/// What tinygltf (Debian's, built without its Draco option) cannot parse in compressed files
+/// and WebP images, rewritten in the JSON before it sees it: the document after the changes and, for a .glb, the
+/// file rebuilt around it; nothing when nothing needs changing.
+struct PreparedFile {
+    std::vector<unsigned char> bytes;
+    /// Draco primitives' indices accessors, by mesh and primitive: tinygltf refuses an indices
+    /// accessor without a bufferView, which is what Draco's are, so they are taken out of the
+    /// primitives and handed to the importer instead.
+    std::map<std::pair<size_t, size_t>, int> dracoIndices;
+};
+
+std::optional<PreparedFile> prepareForTinygltf(const std::vector<unsigned char>& bytes, bool binary)
+{
+    const std::string_view json = jsonText(bytes, binary);
+    auto document = nlohmann::json::parse(json.begin(), json.end(), nullptr, /*allow_exceptions*/ false);
+    if (!document.is_object()) return std::nullopt; // tinygltf reports it
+    PreparedFile prepared;
+    bool changed = false;
+    const auto accessors = document.find("accessors");
+    const auto meshes = document.find("meshes");
+    if (meshes != document.end() && meshes->is_array()) {
+        for (size_t m = 0; m < meshes->size(); ++m) {
+            auto& mesh = (*meshes)[m];
+            if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+            auto& primitives = mesh["primitives"];
+            for (size_t p = 0; p < primitives.size(); ++p) {
+                auto& primitive = primitives[p];
+                if (!primitive.is_object() || !primitive.contains("indices") || !primitive["indices"].is_number_integer())
+                    continue;
+                const auto extensions = primitive.find("extensions");
+                if (extensions == primitive.end() || !extensions->is_object() ||
+                    !extensions->contains("KHR_draco_mesh_compression"))
+                    continue;
+                const auto index = primitive["indices"].get<int64_t>();
+                if (index < 0 || accessors == document.end() || !accessors->is_array() || size_t(index) >= accessors->size())
+                    continue; // out of range: the importer reports it
+                if ((*accessors)[size_t(index)].contains("bufferView")) continue;
+                prepared.dracoIndices[{m, p}] = int(index);
+                primitive.erase("indices");
+                changed = true;
+            }
+        }
+    }
+    // EXT_meshopt_compression's fallback buffer may hold no data (no uri); tinygltf then reads it
+    // as the .glb's BIN chunk, or refuses a .gltf. Only compressed bufferViews may use it, and
+    // those are decoded into buffers of their own: a one-byte stand-in is enough.
+    const auto buffers = document.find("buffers");
+    if (buffers != document.end() && buffers->is_array()) {
+        for (size_t i = binary ? 1 : 0; i < buffers->size(); ++i) {
+            auto& buffer = (*buffers)[i];
+            if (!buffer.is_object() || buffer.contains("uri")) continue;
+            const auto extensions = buffer.find("extensions");
+            if (extensions == buffer.end() || !extensions->is_object()) continue;
+            const auto meshopt = extensions->find("EXT_meshopt_compression");
+            if (meshopt == extensions->end() || !meshopt->is_object()) continue;
+            const auto fallback = meshopt->find("fallback");
+            if (fallback == meshopt->end() || !fallback->is_boolean() || !fallback->get<bool>()) continue;
+            buffer["uri"] = "data:application/octet-stream;base64,AA==";
+            buffer["byteLength"] = 1;
+            changed = true;
+        }
+    }
+    // tinygltf takes data URIs of a fixed list of types only, which lacks WebP
+    // (EXT_texture_webp); as a byte stream it hands them to our decoder just the same.
+    const auto images = document.find("images");
+    if (images != document.end() && images->is_array()) {
+        constexpr std::string_view kWebpUri = "data:image/webp;base64,";
+        for (auto& image : *images) {
+            if (!image.is_object() || !image.contains("uri") || !image["uri"].is_string()) continue;
+            auto& uri = image["uri"].get_ref<std::string&>();
+            if (!uri.starts_with(kWebpUri)) continue;
+            uri.replace(0, kWebpUri.size(), "data:application/octet-stream;base64,");
+            changed = true;
+        }
+    }
+    if (!changed) return std::nullopt;
+
+    std::string text = document.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    if (!binary) {
+        prepared.bytes.assign(text.begin(), text.end());
+        return prepared;
+    }
+    // glTF 2.0 spec (GLB file format): chunks are 4-byte aligned, JSON padded with spaces.
+    while (text.size() % 4 != 0) text += ' ';
+    const size_t rest = bytes.size() - 20 - json.size(); // the BIN chunk (and any after it)
+    const auto put32 = [&](uint32_t value) {
+        for (int k = 0; k < 4; ++k) prepared.bytes.push_back(uint8_t(value >> (8 * k)));
+    };
+    put32(kGlbMagic);
+    put32(2);
+    put32(uint32_t(12 + 8 + text.size() + rest));
+    put32(uint32_t(text.size()));
+    put32(kGlbJsonChunk);
+    prepared.bytes.insert(prepared.bytes.end(), text.begin(), text.end());
+    prepared.bytes.insert(prepared.bytes.end(), bytes.end() - std::ptrdiff_t(rest), bytes.end());
+    return prepared;
 }
 
 /// tinygltf opens files through these. checkDeclarations has refused the URIs outside the
@@ -554,10 +682,13 @@ Scene loadFromBytes(const std::string& file, const fs::path& path, const std::ve
     std::string err, warn;
     const std::string baseDir = directory.string();
     bool loaded = false;
+    std::optional<PreparedFile> prepared = prepareForTinygltf(bytes, binary);
+    const std::vector<unsigned char>& parsed = prepared ? prepared->bytes : bytes;
+    if (parsed.size() >= std::numeric_limits<uint32_t>::max()) throw Error("{}: the file is too large", file);
     try {
-        loaded = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir)
-                        : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
-                                                     unsigned(bytes.size()), baseDir);
+        loaded = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, parsed.data(), unsigned(parsed.size()), baseDir)
+                        : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(parsed.data()),
+                                                     unsigned(parsed.size()), baseDir);
     } catch (const std::exception& e) {
         // tinygltf reports most problems through `err`, but not all (vector::at, bad_alloc).
         err = e.what();
@@ -566,13 +697,13 @@ Scene loadFromBytes(const std::string& file, const fs::path& path, const std::ve
     if (!access.refusal.empty()) throw Error("{}: {}", file, access.refusal);
     if (!loaded) {
         const std::string extensionName = unsupportedRequiredExtension(jsonText(bytes, binary));
-        if (!extensionName.empty()) throw Error("{}: requires the unsupported extension {}", file, extensionName);
+        if (!extensionName.empty()) throw Error("{}: {}", file, refusal(extensionName));
         throw Error("{}: {}", file, describeLoadError(err));
     }
     // Missing images are reported again, with their consequence, by the importer.
     if (!warn.empty()) log::debug("{}: tinygltf: {}", file, oneLine(warn));
 
-    return Importer(file, path.stem().string(), model, images).run();
+    return Importer(file, path.stem().string(), model, images, prepared ? std::move(prepared->dracoIndices) : decltype(PreparedFile::dracoIndices){}).run();
 }
 
 } // namespace

@@ -42,17 +42,36 @@ std::optional<double> number(const tinygltf::Value& object, const char* key);
 std::optional<int> integer(const tinygltf::Value& object, const char* key);
 std::optional<glm::vec2> vec2(const tinygltf::Value& object, const char* key);
 
-// Accessor contents (GltfMeshes.cpp)
+/// Accessor contents as `components` values per element (GltfMeshes.cpp reads them from
+/// buffers, GltfCompression.cpp from Draco data).
 template <typename T>
-struct AccessorData;
+struct AccessorData {
+    size_t count = 0;
+    int components = 0;
+    std::vector<T> values;
+    T at(size_t element, int component) const { return values[element * size_t(components) + size_t(component)]; }
+};
+
+/// A primitive's KHR_draco_mesh_compression data, decoded (GltfCompression.cpp): the attributes
+/// the extension names, by glTF attribute name, and the triangle list.
+struct DracoPrimitive {
+    std::map<std::string, AccessorData<float>> attributes;
+    std::vector<uint32_t> indices;
+};
+
+/// Number of components of an accessor type (1 to 4; 0 for matrices), GltfMeshes.cpp.
+int componentCount(int type);
 
 // ---------------------------------------------------------------------------------------------
 // The conversion from tinygltf's model to our scene
 
 class Importer {
 public:
-    Importer(std::string file, std::string name, tinygltf::Model& model, ImageDecoding& images)
-        : mFile(std::move(file)), mModel(model), mImages(images)
+    /// `dracoIndices`: the indices accessor of each Draco primitive, by mesh and primitive
+    /// index, taken out of the JSON before tinygltf parsed it (see prepareForTinygltf).
+    Importer(std::string file, std::string name, tinygltf::Model& model, ImageDecoding& images,
+             std::map<std::pair<size_t, size_t>, int> dracoIndices = {})
+        : mFile(std::move(file)), mModel(model), mImages(images), mDracoIndices(std::move(dracoIndices))
     {
         mScene.name = std::move(name);
     }
@@ -61,6 +80,8 @@ public:
     {
         checkVersion();
         checkRequiredExtensions();
+        warnIgnoredExtensions();
+        decodeMeshoptBufferViews();
         checkBufferViews();
         convertImages();
         convertSamplers();
@@ -112,7 +133,18 @@ private:
 
     void checkVersion() const;
     void checkRequiredExtensions() const;
+    /// One warning per optional extension the file uses that we ignore (not one per use).
+    void warnIgnoredExtensions();
     void checkBufferViews() const;
+
+    // -- compressed data (GltfCompression.cpp) -------------------------------------------------
+
+    /// EXT_meshopt_compression: every compressed bufferView decoded into a buffer of its own, the
+    /// view pointed at it, so that accessors read it as any other.
+    void decodeMeshoptBufferViews();
+    /// KHR_draco_mesh_compression: the primitive's compressed attributes and indices.
+    DracoPrimitive decodeDraco(const tinygltf::Primitive& source, int indicesAccessor, const tinygltf::Value& draco,
+                               const std::string& where) const;
 
     // -- accessors (GltfMeshes.cpp) ------------------------------------------------------------
 
@@ -123,6 +155,8 @@ private:
 
     // -- images, samplers, materials (GltfMaterials.cpp) ---------------------------------------
 
+    /// The image a texture samples: EXT_texture_webp's if it has one, else `source` (-1: none).
+    static int textureSource(const tinygltf::Texture& texture);
     void convertImages();
     static Wrap wrap(int mode);
     void convertSamplers();
@@ -133,7 +167,7 @@ private:
 
     // -- meshes (GltfMeshes.cpp) ---------------------------------------------------------------
 
-    std::optional<Primitive> convertPrimitive(const tinygltf::Primitive& source, const std::string& where);
+    std::optional<Primitive> convertPrimitive(const tinygltf::Primitive& source, int indicesAccessor, const std::string& where);
     void convertMeshes();
 
     // -- cameras, lights, nodes (GltfImporter.cpp) ---------------------------------------------
@@ -148,6 +182,7 @@ private:
     ImageDecoding& mImages;
     Scene mScene;
     std::vector<int> mParent; ///< per node, -1 for roots
+    std::map<std::pair<size_t, size_t>, int> mDracoIndices;
 };
 
 } // namespace specula::scene::gltf_detail

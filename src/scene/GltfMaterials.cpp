@@ -2,7 +2,10 @@
 #include <algorithm>
 #include <limits>
 
+#include <cstring>
+
 #include <stb/stb_image.h>
+#include <webp/decode.h>
 
 #include "scene/GltfInternal.h"
 
@@ -26,7 +29,9 @@ std::string decodeRgba8(const unsigned char* bytes, size_t size, tinygltf::Image
     if (size > size_t(std::numeric_limits<int>::max())) return "the image data is too large";
     const int length = int(size);
     int width = 0, height = 0, channels = 0;
-    if (stbi_info_from_memory(bytes, length, &width, &height, &channels)) {
+    // EXT_texture_webp's images (RIFF container, WEBP form), decoded with libwebp.
+    const bool webp = size >= 12 && std::memcmp(bytes, "RIFF", 4) == 0 && std::memcmp(bytes + 8, "WEBP", 4) == 0;
+    if (webp ? WebPGetInfo(bytes, size, &width, &height) != 0 : stbi_info_from_memory(bytes, length, &width, &height, &channels) != 0) {
         const LoadLimits& limits = decoding.limits;
         const uint64_t bytesNeeded = uint64_t(width) * uint64_t(height) * 4;
         if (width > limits.maxImageSize || height > limits.maxImageSize) {
@@ -44,9 +49,15 @@ std::string decodeRgba8(const unsigned char* bytes, size_t size, tinygltf::Image
         decoding.textureBytes += bytesNeeded;
     }
     std::vector<unsigned char> pixels;
+    if (webp) {
+        uint8_t* data = WebPDecodeRGBA(bytes, size, &width, &height);
+        if (!data) return "cannot decode it (malformed WebP data)";
+        pixels.assign(data, data + size_t(width) * size_t(height) * 4);
+        WebPFree(data);
+    }
     // stb_image also reads 16-bit PNGs through stbi_load, but truncates them (v >> 8); read
     // them at 16 bits and round instead, so 8-bit values stored as 16-bit ones survive exactly.
-    if (stbi_is_16_bit_from_memory(bytes, length)) {
+    if (!webp && stbi_is_16_bit_from_memory(bytes, length)) {
         if (stbi_us* data = stbi_load_16_from_memory(bytes, length, &width, &height, &channels, 4)) {
             pixels.resize(size_t(width) * size_t(height) * 4);
             for (size_t i = 0; i < pixels.size(); ++i)
@@ -97,8 +108,10 @@ bool loadImageData(tinygltf::Image* image, const int imageIndex, std::string* er
 void Importer::convertImages()
 {
     std::vector<bool> used(mModel.images.size(), false);
-    for (const tinygltf::Texture& texture : mModel.textures)
-        if (texture.source >= 0 && size_t(texture.source) < used.size()) used[size_t(texture.source)] = true;
+    for (const tinygltf::Texture& texture : mModel.textures) {
+        const int image = textureSource(texture);
+        if (image >= 0 && size_t(image) < used.size()) used[size_t(image)] = true;
+    }
     for (size_t i = 0; i < mModel.images.size(); ++i) {
         tinygltf::Image& source = mModel.images[i];
         const auto where = fmt::format("image {}", i);
@@ -137,6 +150,14 @@ void Importer::convertImages()
         }
         mScene.images.push_back(std::move(image));
     }
+}
+
+int Importer::textureSource(const tinygltf::Texture& texture)
+{
+    // EXT_texture_webp: the WebP image, in place of `source` (a PNG or JPEG fallback, if any).
+    if (const tinygltf::Value* webp = extension(texture.extensions, "EXT_texture_webp"))
+        if (const auto image = integer(*webp, "source"); image && *image >= 0) return *image;
+    return texture.source;
 }
 
 Wrap Importer::wrap(int mode)
@@ -180,12 +201,17 @@ TextureRef Importer::textureRef(int textureIndex, int texCoord, const tinygltf::
     if (textureIndex < 0) return ref; // tinygltf's "absent"
     const tinygltf::Texture& texture = at(mModel.textures, textureIndex, "texture", where);
     const auto name = fmt::format("texture {}", textureIndex);
-    if (texture.source < 0) {
-        warn("{} has no image in a format we read; {} is drawn without it", name, where);
+    const int image = textureSource(texture);
+    if (image < 0) {
+        // KHR_texture_basisu's textures were warned about once, by the extension's name.
+        if (extension(texture.extensions, "KHR_texture_basisu"))
+            log::debug("{}: {} has only a KTX2 image; {} is drawn without it", mFile, name, where);
+        else
+            warn("{} has no image in a format we read; {} is drawn without it", name, where);
         return ref;
     }
-    at(mModel.images, texture.source, "image", name);
-    ref.image = texture.source;
+    at(mModel.images, image, "image", name);
+    ref.image = image;
     if (texture.sampler >= 0) {
         at(mModel.samplers, texture.sampler, "sampler", name);
         ref.sampler = texture.sampler;
@@ -255,6 +281,15 @@ void Importer::convertMaterials()
                                                source.occlusionTexture.extensions, where + " occlusionTexture");
         material.emissiveTexture = textureRef(source.emissiveTexture.index, source.emissiveTexture.texCoord,
                                               source.emissiveTexture.extensions, where + " emissiveTexture");
+        // KHR_materials_unlit: colour = the base colour term (factor × texture × vertex colour),
+        // whatever the lights and the environment. The other PBR properties are only the fallback
+        // of viewers without the extension (kept for --shading pbr), but emission is no part of
+        // the unlit colour, so it goes.
+        if (extension(source.extensions, "KHR_materials_unlit")) {
+            material.shading.model = ShadingModel::Unlit;
+            material.emissiveFactor = glm::vec3(0.0f);
+            material.emissiveTexture = {};
+        }
         mScene.materials.push_back(std::move(material));
     }
 }

@@ -12,22 +12,6 @@ namespace specula::scene::gltf_detail {
 // ---------------------------------------------------------------------------------------------
 // Accessors
 
-/// Accessor contents as `components` values per element.
-template <typename T>
-struct AccessorData {
-    size_t count = 0;
-    int components = 0;
-    std::vector<T> values;
-    T at(size_t element, int component) const { return values[element * size_t(components) + size_t(component)]; }
-};
-
-namespace {
-
-// An accessor without a bufferView (all zeros, maybe sparse) has no data bounding its count;
-// this keeps a hostile count from turning into a multi-gigabyte allocation. Accessors with a
-// bufferView are bounded by the file's size.
-constexpr size_t kMaxUnbackedAccessorCount = size_t(1) << 24;
-
 int componentCount(int type)
 {
     switch (type) {
@@ -38,6 +22,13 @@ int componentCount(int type)
     default: return 0; // matrices: no vertex attribute we read uses them
     }
 }
+
+namespace {
+
+// An accessor without a bufferView (all zeros, maybe sparse) has no data bounding its count;
+// this keeps a hostile count from turning into a multi-gigabyte allocation. Accessors with a
+// bufferView are bounded by the file's size.
+constexpr size_t kMaxUnbackedAccessorCount = size_t(1) << 24;
 
 /// Byte size of a glTF accessor component type, or 0 for types glTF does not allow.
 size_t componentSize(int componentType)
@@ -215,7 +206,8 @@ AccessorData<T> Importer::read(int index, std::string_view where) const
 
 // -- meshes ----------------------------------------------------------------------------------
 
-std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& source, const std::string& where)
+std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& source, const int indicesAccessor,
+                                                    const std::string& where)
 {
     // tinygltf reads an absent mode as TRIANGLES.
     const int mode = source.mode;
@@ -235,7 +227,20 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
         return std::nullopt;
     }
 
-    const auto positions = read<float>(positionAccessor, where + " POSITION");
+    // KHR_draco_mesh_compression: the attributes it names and the indices come from its data,
+    // any others from their accessors as usual.
+    std::optional<DracoPrimitive> draco;
+    if (const tinygltf::Value* extension = gltf_detail::extension(source.extensions, "KHR_draco_mesh_compression"))
+        draco = decodeDraco(source, indicesAccessor, *extension, where);
+    auto readAttribute = [&](const char* name, int index, const std::string& attributeWhere) {
+        if (draco) {
+            const auto it = draco->attributes.find(name);
+            if (it != draco->attributes.end()) return std::move(it->second);
+        }
+        return read<float>(index, attributeWhere);
+    };
+
+    const auto positions = readAttribute("POSITION", positionAccessor, where + " POSITION");
     if (positions.components != 3) fail("{} POSITION must be VEC3", where);
     const size_t vertexCount = positions.count;
     if (vertexCount > std::numeric_limits<uint32_t>::max()) fail("{} has too many vertices", where);
@@ -246,7 +251,7 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
         const int index = attribute(name);
         if (index < 0) return data;
         const auto attributeWhere = fmt::format("{} {}", where, name);
-        data = read<float>(index, attributeWhere);
+        data = readAttribute(name, index, attributeWhere);
         if (data->components < minComponents || data->components > maxComponents)
             fail("{} has {} components per element, which glTF does not allow", attributeWhere, data->components);
         if (data->count != vertexCount)
@@ -281,15 +286,18 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
     primitive.hasTangents = tangents.has_value();
     primitive.hasColors = colors.has_value();
 
-    if (source.indices >= 0) {
+    if (draco) {
+        // decodeDraco has checked them against the vertex count.
+        primitive.indices = mode == TINYGLTF_MODE_TRIANGLES ? std::move(draco->indices) : triangulate(draco->indices, mode);
+    } else if (indicesAccessor >= 0) {
         const auto indexWhere = where + " indices";
-        const auto& accessor = at(mModel.accessors, source.indices, "accessor", indexWhere);
+        const auto& accessor = at(mModel.accessors, indicesAccessor, "accessor", indexWhere);
         if (accessor.type != TINYGLTF_TYPE_SCALAR ||
             (accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
              accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
              accessor.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
-            fail("{}: accessor {} must hold unsigned byte, short or int scalars", indexWhere, source.indices);
-        auto indices = read<uint32_t>(source.indices, indexWhere);
+            fail("{}: accessor {} must hold unsigned byte, short or int scalars", indexWhere, indicesAccessor);
+        auto indices = read<uint32_t>(indicesAccessor, indexWhere);
         for (uint32_t index : indices.values)
             if (index >= vertexCount)
                 fail("{} refer to vertex {}, but there are {} vertices", indexWhere, index, vertexCount);
@@ -324,7 +332,9 @@ void Importer::convertMeshes()
         Mesh mesh;
         mesh.name = source.name;
         for (size_t p = 0; p < source.primitives.size(); ++p) {
-            auto primitive = convertPrimitive(source.primitives[p], fmt::format("mesh {} primitive {}", m, p));
+            const auto draco = mDracoIndices.find({m, p});
+            const int indices = draco != mDracoIndices.end() ? draco->second : source.primitives[p].indices;
+            auto primitive = convertPrimitive(source.primitives[p], indices, fmt::format("mesh {} primitive {}", m, p));
             if (primitive) mesh.primitives.push_back(std::move(*primitive));
         }
         mScene.meshes.push_back(std::move(mesh));

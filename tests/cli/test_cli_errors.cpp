@@ -129,3 +129,48 @@ TEST(CliErrors, BadValues)
     expectCleanFailure(runCli("render --camera 5 -o " + dir + "/out.png"), "camera 5", dir + "/out.png");
     expectCleanFailure(runCli("render --brdf-g beckmann -o " + dir + "/out.png"), "beckmann", dir + "/out.png");
 }
+
+TEST(CliErrors, UnsupportedExtensions)
+{
+    // Required: refused with one line naming it. Optional: one warning naming it, however many
+    // primitives use it, and the file renders.
+    const std::string dir = tempDir("extensions");
+    const std::string triangle = R"(
+      "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "extensions": {"EXT_made_up": {}}},
+                                 {"attributes": {"POSITION": 0}, "extensions": {"EXT_made_up": {}}}]}],
+      "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0
+    })";
+    writeText(dir + "/required.gltf", R"({"asset": {"version": "2.0"}, "extensionsUsed": ["EXT_made_up"],
+      "extensionsRequired": ["EXT_made_up"],)" + triangle);
+    expectCleanFailure(runCli("render " + dir + "/required.gltf -o " + dir + "/out.png"),
+                       "requires the unsupported extension EXT_made_up", dir + "/out.png");
+    writeText(dir + "/basisu.gltf", R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_texture_basisu"],
+      "extensionsRequired": ["KHR_texture_basisu"],)" + triangle);
+    expectCleanFailure(runCli("render " + dir + "/basisu.gltf -o " + dir + "/out.png"),
+                       "requires the unsupported extension KHR_texture_basisu (KTX2", dir + "/out.png");
+
+    writeText(dir + "/optional.gltf", R"({"asset": {"version": "2.0"}, "extensionsUsed": ["EXT_made_up"],)" + triangle);
+    const auto r = runCli("render " + dir + "/optional.gltf --width 32 --height 32 -o " + dir + "/out.png");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    size_t mentions = 0;
+    for (size_t at = r.err.find("EXT_made_up"); at != std::string::npos; at = r.err.find("EXT_made_up", at + 1)) ++mentions;
+    EXPECT_EQ(mentions, 1u) << r.err;
+    EXPECT_NE(r.err.find("warning"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(dir + "/out.png"));
+}
+
+TEST(CliErrors, CompressedModelsRender)
+{
+    const std::string dir = tempDir("compressed");
+    for (const std::string& model : {kAssets + "/models/PmndrsSuzi/suzi_draco.glb",
+                                    std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/logo_webp_meshopt.glb"}) {
+        const auto r = runCli("render " + model + " --width 32 --height 32 -o " + dir + "/out.png");
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+        EXPECT_TRUE(fs::exists(dir + "/out.png"));
+        fs::remove(dir + "/out.png");
+    }
+}

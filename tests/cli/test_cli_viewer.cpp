@@ -410,3 +410,21 @@ TEST(CliViewer, MaterialEditsSurviveAShaderReload)
     EXPECT_EQ(meanDifference(edited, reloaded), 0.0);
 }
 
+
+// A glTF file's KHR_materials_unlit material in the Materials panel: the panel is drawn for it
+// (shading model "unlit" and what that shows) without a GL error; the window's picture is kept
+// for review by eye.
+TEST(CliViewer, UnlitMaterialInTheMaterialsPanel)
+{
+    ASSERT_TRUE(haveDisplay()) << "no display: run through scripts/test.sh, which uses Xvfb (a window test must not skip)";
+    const std::string dir = tempDir("viewer-unlit");
+    const std::string out = std::string(SPECULA_TEST_OUTPUT_DIR) + "/viewer-unlit-panel.png";
+    std::ofstream(dir + "/script.txt") << "panel statistics closed\npanel scene closed\npanel lights closed\npanel materials open\n"
+                                          "select-material 0\n"
+                                          "frames 2\n"
+                                          "screenshot-window " << out << "\n";
+    const auto r = runCli("view " + std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/unlit_quads.gltf --width 560 --height 560 --script " +
+                          dir + "/script.txt");
+    ASSERT_EQ(r.exitCode, 0) << r.err; // non-zero on any GL debug error
+    EXPECT_TRUE(std::filesystem::exists(out));
+}

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -13,6 +14,7 @@
 
 #include <glm/gtc/constants.hpp>
 #include <nlohmann/json.hpp>
+#include <webp/encode.h>
 
 #include "TestFiles.h"
 #include "core/Error.h"
@@ -553,14 +555,6 @@ TEST(GltfModels, UnusedDdsImagesAndRequiredMsftTextureDds)
     EXPECT_EQ(station.cameras.size(), 2u);
 }
 
-TEST(GltfModels, DracoIsAnUnsupportedRequiredExtension)
-{
-    const auto path = kModels / "PmndrsBunny/bunny_draco.glb";
-    const std::string message = errorOf([&] { loadGltf(path); });
-    EXPECT_NE(message.find("bunny_draco.glb"), std::string::npos) << message;
-    EXPECT_NE(message.find("KHR_draco_mesh_compression"), std::string::npos) << message;
-}
-
 // --- broken files ----------------------------------------------------------------------------
 
 TEST(GltfErrors, MissingFile)
@@ -1089,4 +1083,395 @@ TEST(GltfFeatures, DefaultSceneIsChosen)
     EXPECT_EQ(loadGltf(b.write(dir, "second.gltf")).roots, std::vector<int>{1});
     b.doc.erase("scene");
     EXPECT_EQ(loadGltf(b.write(dir, "first.gltf")).roots, std::vector<int>{0});
+}
+
+// --- compressed models -----------------------------------------------------------------------
+// The Draco files in ../shared/assets were made from the uncompressed originals next to them
+// by glTF-Transform 3.4 `optimize` (weld, simplify, then Draco at its default quantisation:
+// 14-bit positions, 10-bit octahedral normals, 12-bit texture coordinates); the meshopt ones in
+// tests/assets/gltf by glTF-Transform 4.5 `meshopt` (quantised to int16 positions dequantised
+// by the node's transform, int8 octahedral normals, uint16 texture coordinates). Both pipelines
+// reorder and weld vertices (and Draco's simplifies), so vertices are compared by matching: every
+// decoded vertex must have an original one within the quantisation on every attribute.
+
+namespace {
+
+const fs::path kTestAssets = fs::path(SPECULA_SOURCE_DIR) / "tests/assets/gltf";
+
+struct WorldVertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+    glm::vec2 uv;
+};
+
+/// Every vertex of every drawn primitive in world space (the meshopt files' dequantisation is a
+/// node transform).
+std::vector<WorldVertex> worldVertices(const Scene& scene, size_t* triangles = nullptr)
+{
+    std::vector<WorldVertex> out;
+    if (triangles) *triangles = 0;
+    for (const MeshInstance& instance : scene.meshInstances()) {
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(instance.world)));
+        for (const Primitive& p : scene.meshes[size_t(instance.mesh)].primitives) {
+            for (const Vertex& v : p.vertices)
+                out.push_back({glm::vec3(instance.world * glm::vec4(v.position, 1.0f)), glm::normalize(normalMatrix * v.normal), v.uv0});
+            if (triangles) *triangles += (p.indices.empty() ? p.vertices.size() : p.indices.size()) / 3;
+        }
+    }
+    return out;
+}
+
+struct MatchError {
+    float position = 0.0f; ///< worst per-axis distance to the matched original vertex
+    float normal = 0.0f;   ///< worst |Δ| of the unit normals
+    float uv = 0.0f;       ///< worst per-axis |Δ| of TEXCOORD_0
+    size_t unmatched = 0;  ///< decoded vertices with no original within the position tolerance
+};
+
+/// Matches each decoded vertex to the original one within `positionTolerance` (per axis) whose
+/// normal, then texture coordinate, is closest (a seam has several vertices at one position).
+MatchError matchVertices(const std::vector<WorldVertex>& decoded, const std::vector<WorldVertex>& original,
+                         float positionTolerance, bool compareUv)
+{
+    MatchError error;
+    for (const WorldVertex& d : decoded) {
+        float bestScore = 1e30f;
+        const WorldVertex* best = nullptr;
+        for (const WorldVertex& o : original) {
+            const glm::vec3 dp = glm::abs(d.position - o.position);
+            if (std::max({dp.x, dp.y, dp.z}) > positionTolerance) continue;
+            const float score = glm::length(d.normal - o.normal) + (compareUv ? glm::length(d.uv - o.uv) : 0.0f);
+            if (score < bestScore) {
+                bestScore = score;
+                best = &o;
+            }
+        }
+        if (!best) {
+            ++error.unmatched;
+            continue;
+        }
+        const glm::vec3 dp = glm::abs(d.position - best->position);
+        error.position = std::max({error.position, dp.x, dp.y, dp.z});
+        error.normal = std::max(error.normal, glm::length(d.normal - best->normal));
+        if (compareUv) {
+            const glm::vec2 du = glm::abs(d.uv - best->uv);
+            error.uv = std::max({error.uv, du.x, du.y});
+        }
+    }
+    return error;
+}
+
+/// Half a step of a `bits`-bit quantisation over `range`: the largest rounding error.
+float halfStep(float range, int bits) { return 0.5f * range / float((1 << bits) - 1); }
+
+float largestExtent(const Bounds& b)
+{
+    const glm::vec3 e = b.max - b.min;
+    return std::max({e.x, e.y, e.z});
+}
+
+} // namespace
+
+TEST(GltfCompression, DracoModelsDecodeToTheirOriginalsVertices)
+{
+    struct Case {
+        const char* original;
+        const char* draco;
+        size_t vertices, triangles; ///< of the Draco file (its accessors' counts)
+        bool uv;
+    };
+    const Case cases[] = {
+        {"PmndrsBunny/bunny.glb", "PmndrsBunny/bunny_draco.glb", 2826, 5648, false},
+        {"PmndrsSuzi/suzi.glb", "PmndrsSuzi/suzi_draco.glb", 7503, 14842, false},
+        {"PmndrsLogo/pmndrs.glb", "PmndrsLogo/pmndrs_draco.glb", 1074, 1552, true},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.draco);
+        const Scene original = loadGltf(kModels / c.original);
+        Scene draco;
+        ASSERT_NO_THROW(draco = loadGltf(kModels / c.draco));
+        EXPECT_TRUE(draco.warnings.empty());
+        size_t triangles = 0;
+        const auto decoded = worldVertices(draco, &triangles);
+        EXPECT_EQ(decoded.size(), c.vertices);
+        EXPECT_EQ(triangles, c.triangles);
+        // Draco quantises positions over the largest extent of the bounding box, in 14 bits.
+        const float range = largestExtent(original.worldBounds());
+        const float positionTolerance = halfStep(range, 14) * 1.01f; // 1%: float rounding of the dequantisation
+        const MatchError e = matchVertices(decoded, worldVertices(original), positionTolerance, c.uv);
+        EXPECT_EQ(e.unmatched, 0u);
+        EXPECT_LE(e.position, positionTolerance);
+        // 10-bit octahedral normals (Draco's grid has 1022 steps across [-1, 1]): half a step in
+        // both coordinates is √2 / 1022 on the octahedron's plane; lifting onto the octahedron
+        // stretches it by up to √3 and normalising by up to √3 more: 3 √2 / 1022 = 0.00415.
+        EXPECT_LE(e.normal, 3.0f * std::sqrt(2.0f) / 1022.0f);
+        // 12-bit texture coordinates over their [0, 1] range.
+        if (c.uv) {
+            EXPECT_LE(e.uv, halfStep(1.0f, 12) * 1.01f);
+        }
+        const Bounds a = draco.worldBounds(), b = original.worldBounds();
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(a.min[k], b.min[k], positionTolerance);
+            EXPECT_NEAR(a.max[k], b.max[k], positionTolerance);
+        }
+        std::printf("  %s: %zu vertices, worst position error %.3g (tolerance %.3g), normal %.3g, uv %.3g\n", c.draco,
+                    decoded.size(), e.position, positionTolerance, e.normal, e.uv);
+    }
+}
+
+TEST(GltfCompression, MeshoptQuantizedModelDecodesToItsOriginalsVertices)
+{
+    const Scene original = loadGltf(kModels / "PmndrsBunny/bunny.glb");
+    Scene meshopt;
+    ASSERT_NO_THROW(meshopt = loadGltf(kTestAssets / "bunny_meshopt.glb"));
+    EXPECT_TRUE(meshopt.warnings.empty());
+    size_t triangles = 0, originalTriangles = 0;
+    const auto decoded = worldVertices(meshopt, &triangles);
+    const auto vertices = worldVertices(original, &originalTriangles);
+    // meshopt keeps every vertex and triangle (it reorders them).
+    EXPECT_EQ(decoded.size(), vertices.size());
+    EXPECT_EQ(triangles, originalTriangles);
+    // glTF-Transform quantises positions to 14 bits over the largest extent (half a step:
+    // 5.6e-5 here) and stores them as int16 by bit replication ((q << 2) | (q >> 11)), which
+    // moves them by up to half a step more (at most 2.8e-5 here; measured in all: 7.6e-5).
+    const float positionTolerance = 1.5f * halfStep(largestExtent(original.worldBounds()), 14) * 1.01f;
+    const MatchError e = matchVertices(decoded, vertices, positionTolerance, true);
+    EXPECT_EQ(e.unmatched, 0u);
+    EXPECT_LE(e.position, positionTolerance);
+    // 8-bit octahedral normals (the OCTAHEDRAL filter, ±127): half a step in both coordinates,
+    // stretched as for Draco's, is 3 √2 / 254 = 0.0167; the encoder also rounds the unit vector's
+    // projection, so 0.02 (measured 0.0178).
+    EXPECT_LE(e.normal, 0.02f);
+    // 12-bit texture coordinates over [0, 1] stored as uint16 by bit replication: half a step
+    // and at most 1/65535 more.
+    EXPECT_LE(e.uv, halfStep(1.0f, 12) + 1.0f / 65535.0f);
+    std::printf("  bunny_meshopt: worst position error %.3g (tolerance %.3g), normal %.3g, uv %.3g\n", e.position,
+                positionTolerance, e.normal, e.uv);
+}
+
+TEST(GltfCompression, MeshoptInAGltfWithAnExternalBuffer)
+{
+    // The same file as .gltf + .bin: the fallback buffer has no uri, which tinygltf refuses in a
+    // .gltf unless the importer stands in for it.
+    TempDir dir;
+    const std::string glb = readFile(kTestAssets / "bunny_meshopt.glb");
+    uint32_t jsonLength = 0, binLength = 0;
+    std::memcpy(&jsonLength, glb.data() + 12, 4);
+    std::memcpy(&binLength, glb.data() + 20 + jsonLength, 4);
+    json document = json::parse(glb.substr(20, jsonLength));
+    document["buffers"][0]["uri"] = "bunny.bin";
+    writeFile(dir / "bunny.bin", glb.substr(20 + jsonLength + 8, binLength));
+    writeFile(dir / "bunny.gltf", document.dump());
+    Scene fromGltf;
+    ASSERT_NO_THROW(fromGltf = loadGltf(dir / "bunny.gltf"));
+    const Scene fromGlb = loadGltf(kTestAssets / "bunny_meshopt.glb");
+    const auto a = worldVertices(fromGltf), b = worldVertices(fromGlb);
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i].position, b[i].position) << i;
+}
+
+TEST(GltfCompression, WebpTextureDecodes)
+{
+    // A lossy 512² WebP of the logo's 2048² JPEG: the same picture, so the same mean colour
+    // within the WebP's loss and the resampling (measured: under 1 level).
+    const Scene webp = loadGltf(kTestAssets / "logo_webp_meshopt.glb");
+    const Scene jpeg = loadGltf(kModels / "PmndrsLogo/pmndrs.glb");
+    ASSERT_EQ(webp.images.size(), 1u);
+    EXPECT_TRUE(webp.warnings.empty());
+    ASSERT_EQ(webp.images[0].width, 512);
+    ASSERT_EQ(webp.images[0].height, 512);
+    ASSERT_EQ(webp.materials.at(0).baseColorTexture.image, 0);
+    auto mean = [](const Image& image) {
+        glm::dvec3 sum(0.0);
+        for (size_t i = 0; i < image.pixels.size(); i += 4)
+            sum += glm::dvec3(image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]);
+        return sum / double(image.pixels.size() / 4);
+    };
+    const glm::dvec3 a = mean(webp.images[0]), b = mean(jpeg.images.at(0));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 1.0) << c;
+}
+
+TEST(GltfCompression, LosslessWebpDecodesExactly)
+{
+    // A 5x3 image with every channel distinct, encoded lossless by libwebp's own encoder: the
+    // texture must come back byte for byte, rows top first, channels in order, alpha kept.
+    std::vector<uint8_t> rgba(5 * 3 * 4);
+    for (size_t i = 0; i < rgba.size(); ++i) rgba[i] = uint8_t(i * 17 + (i % 4 == 3 ? 40 : 0));
+    uint8_t* encoded = nullptr;
+    const size_t size = WebPEncodeLosslessRGBA(rgba.data(), 5, 3, 5 * 4, &encoded);
+    ASSERT_GT(size, 0u);
+    const std::vector<uint8_t> webp(encoded, encoded + size);
+    WebPFree(encoded);
+    TempDir dir;
+    GltfBuilder b;
+    auto& p = b.primitive({{"POSITION", b.vec3(kTriangle)}, {"TEXCOORD_0", b.vec2({0, 0, 1, 0, 0, 1})}});
+    p["material"] = 0;
+    b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    // The texture's own source is a PNG fallback; EXT_texture_webp's image is the one used.
+    b.doc["textures"] = {{{"source", 1}, {"extensions", {{"EXT_texture_webp", {{"source", 0}}}}}}};
+    b.doc["images"] = {{{"uri", "data:image/webp;base64," + base64(webp)}},
+                       {{"uri", "data:image/png;base64," + base64(makePng(1, 1, {0, 0, 0}, false))}}};
+    b.doc["extensionsUsed"] = json::array({"EXT_texture_webp"});
+    const Scene scene = loadGltf(b.write(dir, "webp.gltf"));
+    EXPECT_TRUE(scene.warnings.empty());
+    ASSERT_EQ(scene.materials.at(0).baseColorTexture.image, 0);
+    const Image& image = scene.images.at(0);
+    ASSERT_EQ(image.width, 5);
+    ASSERT_EQ(image.height, 3);
+    EXPECT_EQ(image.pixels, rgba);
+    // Malformed WebP data: a warning, and the texture is left out, as for any bad image.
+    b.doc["images"][0]["uri"] = "data:image/webp;base64," + base64(std::vector<uint8_t>(webp.begin(), webp.begin() + 20));
+    const Scene broken = loadGltf(b.write(dir, "badwebp.gltf"));
+    ASSERT_EQ(broken.warnings.size(), 1u);
+    EXPECT_NE(broken.warnings[0].find("cannot decode"), std::string::npos) << broken.warnings[0];
+}
+
+TEST(GltfCompression, MalformedCompressedDataIsAnError)
+{
+    // Bytes flipped inside the compressed data only (the JSON stays valid): every result is a
+    // scene or a one-line Error, never a crash.
+    TempDir dir;
+    std::mt19937 random(99);
+    for (const fs::path& path : {kModels / "PmndrsBunny/bunny_draco.glb", kTestAssets / "bunny_meshopt.glb"}) {
+        const std::string bytes = readFile(path);
+        uint32_t jsonLength = 0;
+        std::memcpy(&jsonLength, bytes.data() + 12, 4);
+        const size_t binStart = 20 + jsonLength + 8;
+        int errors = 0;
+        for (int round = 0; round < 60; ++round) {
+            std::string corrupt = bytes;
+            if (round % 3 == 0) {
+                // Truncated mid-stream: the BIN chunk keeps its length, the data ends in zeros.
+                std::fill(corrupt.begin() + std::ptrdiff_t(binStart + (bytes.size() - binStart) / 2), corrupt.end(), '\0');
+            } else {
+                for (int i = 0; i < 16; ++i) corrupt[binStart + random() % (bytes.size() - binStart)] = char(random());
+            }
+            writeFile(dir / "corrupt.glb", corrupt);
+            try {
+                loadGltf(dir / "corrupt.glb");
+            } catch (const Error& e) {
+                ++errors;
+                const std::string message = e.what();
+                EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+                EXPECT_NE(message.find("corrupt.glb"), std::string::npos) << message;
+            }
+        }
+        EXPECT_GT(errors, 10) << path;
+    }
+    // Draco data cut short: named as such.
+    std::string bunny = readFile(kModels / "PmndrsBunny/bunny_draco.glb");
+    uint32_t jsonLength = 0;
+    std::memcpy(&jsonLength, bunny.data() + 12, 4);
+    std::fill(bunny.begin() + 20 + jsonLength + 8 + 200, bunny.end(), '\0');
+    writeFile(dir / "cut.glb", bunny);
+    const std::string message = errorOf([&] { loadGltf(dir / "cut.glb"); });
+    EXPECT_NE(message.find("KHR_draco_mesh_compression"), std::string::npos) << message;
+}
+
+namespace {
+
+/// A .glb with its JSON chunk changed by `edit` (the BIN chunk as it was).
+std::string editGlbJson(const std::string& glb, const std::function<void(json&)>& edit)
+{
+    uint32_t jsonLength = 0;
+    std::memcpy(&jsonLength, glb.data() + 12, 4);
+    json document = json::parse(glb.substr(20, jsonLength));
+    edit(document);
+    std::string text = document.dump();
+    while (text.size() % 4 != 0) text += ' ';
+    const std::string rest = glb.substr(20 + jsonLength);
+    std::string out = glb.substr(0, 20);
+    const uint32_t total = uint32_t(20 + text.size() + rest.size()), length = uint32_t(text.size());
+    std::memcpy(out.data() + 8, &total, 4);
+    std::memcpy(out.data() + 12, &length, 4);
+    return out + text + rest;
+}
+
+} // namespace
+
+TEST(GltfCompression, DecodedDataRespectsTheLimits)
+{
+    // Decoded vertices and indices are accessor elements; a decoded bufferView is a buffer.
+    LoadOptions options;
+    options.limits.maxAccessorCount = 10000; // the bunny's Draco data holds 16,944 indices
+    std::string message = errorOf([&] { loadGltf(kModels / "PmndrsBunny/bunny_draco.glb", options); });
+    EXPECT_NE(message.find("--max-accessor-count"), std::string::npos) << message;
+    // Accessors that lie about their counts do not get past the limit: the Draco data's own
+    // count is checked before it is decoded.
+    TempDir dir;
+    const std::string bunny = readFile(kModels / "PmndrsBunny/bunny_draco.glb");
+    writeFile(dir / "forged.glb", editGlbJson(bunny, [](json& d) {
+                  d["accessors"][0]["count"] = 30;
+                  d["accessors"][1]["count"] = 10;
+                  d["accessors"][2]["count"] = 10;
+              }));
+    message = errorOf([&] { loadGltf(dir / "forged.glb", options); });
+    EXPECT_NE(message.find("mesh 0 primitive 0 KHR_draco_mesh_compression declares 5648 triangles"), std::string::npos) << message;
+    EXPECT_NE(message.find("--max-accessor-count"), std::string::npos) << message;
+    // Under the limit, a count that does not match the data is an error too.
+    message = errorOf([&] { loadGltf(dir / "forged.glb"); });
+    EXPECT_NE(message.find("its indices accessor 0 has 30 elements"), std::string::npos) << message;
+    writeFile(dir / "forged2.glb", editGlbJson(bunny, [](json& d) { d["accessors"][1]["count"] = 10; }));
+    message = errorOf([&] { loadGltf(dir / "forged2.glb"); });
+    EXPECT_NE(message.find("has 10 elements but the Draco data decodes to 2826 vertices"), std::string::npos) << message;
+    options.limits.maxAccessorCount = 3000; // 3,161 vertices, 17,088 indices
+    message = errorOf([&] { loadGltf(kTestAssets / "bunny_meshopt.glb", options); });
+    EXPECT_NE(message.find("--max-accessor-count"), std::string::npos) << message;
+    options = {};
+    options.limits.maxBufferBytes = 40000; // the fallback buffer declares 84,752 bytes
+    message = errorOf([&] { loadGltf(kTestAssets / "bunny_meshopt.glb", options); });
+    EXPECT_NE(message.find("--max-buffer-bytes"), std::string::npos) << message;
+}
+
+// --- extensions --------------------------------------------------------------------------------
+
+TEST(GltfExtensions, BasisuIsRefusedWhenRequiredAndWarnedAboutOnceWhenOptional)
+{
+    TempDir dir;
+    GltfBuilder b;
+    const int uv = b.vec2({0, 0, 1, 0, 0, 1});
+    for (int k = 0; k < 3; ++k) {
+        auto& p = b.primitive({{"POSITION", b.vec3(kTriangle)}, {"TEXCOORD_0", uv}});
+        p["material"] = 0;
+    }
+    b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    b.doc["textures"] = {{{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}}};
+    b.doc["images"] = {{{"uri", "texture.ktx2"}, {"mimeType", "image/ktx2"}}};
+    writeFile(dir / "texture.ktx2", "\xABKTX 20\xBB\r\n\x1A\n");
+    b.doc["extensionsUsed"] = json::array({"KHR_texture_basisu", "EXT_made_up"});
+    b.doc["extensionsRequired"] = json::array({"KHR_texture_basisu"});
+    std::string message = errorOf([&] { loadGltf(b.write(dir, "required.gltf")); });
+    EXPECT_NE(message.find("required.gltf: requires the unsupported extension KHR_texture_basisu"), std::string::npos) << message;
+    EXPECT_NE(message.find("no KTX library"), std::string::npos) << message;
+
+    // Optional: one warning per extension, however many primitives and textures use it.
+    b.doc.erase("extensionsRequired");
+    b.doc["meshes"][0]["primitives"][0]["extensions"]["EXT_made_up"] = json::object();
+    b.doc["meshes"][1]["primitives"][0]["extensions"]["EXT_made_up"] = json::object();
+    Scene scene;
+    ASSERT_NO_THROW(scene = loadGltf(b.write(dir, "optional.gltf")));
+    ASSERT_EQ(scene.warnings.size(), 2u) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    EXPECT_NE(scene.warnings[0].find("KHR_texture_basisu"), std::string::npos) << scene.warnings[0];
+    EXPECT_NE(scene.warnings[1].find("EXT_made_up"), std::string::npos) << scene.warnings[1];
+    EXPECT_FALSE(scene.materials.at(0).baseColorTexture.valid()); // drawn without it
+}
+
+TEST(GltfExtensions, UnlitMaterial)
+{
+    TempDir dir;
+    GltfBuilder b;
+    auto& p = b.primitive({{"POSITION", b.vec3(kTriangle)}});
+    p["material"] = 0;
+    b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.8, 0.0, 1.0}}, {"metallicFactor", 0}}},
+                           {"emissiveFactor", {1, 1, 1}},
+                           {"extensions", {{"KHR_materials_unlit", json::object()}}}}};
+    b.doc["extensionsUsed"] = json::array({"KHR_materials_unlit"});
+    b.doc["extensionsRequired"] = json::array({"KHR_materials_unlit"});
+    const Scene scene = loadGltf(b.write(dir, "unlit.gltf"));
+    EXPECT_TRUE(scene.warnings.empty());
+    const Material& m = scene.materials.at(0);
+    EXPECT_EQ(m.shading.model, ShadingModel::Unlit);
+    EXPECT_EQ(m.baseColorFactor, glm::vec4(0.5f, 0.8f, 0.0f, 1.0f));
+    // The extension's colour is the base colour term alone: no emission.
+    EXPECT_EQ(m.emissiveFactor, glm::vec3(0.0f));
 }
