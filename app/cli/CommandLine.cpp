@@ -62,6 +62,8 @@ void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
                         "clustered (default: each pixel evaluates its cluster's lights) or none (every light everywhere)");
     command->add_option("--light-cutoff", frame.lightCutoff,
                         "lights without a range end where their illuminance falls to this fraction of it at 1 m (default 1e-4: 100 m; 0 = infinite)");
+    command->add_option("--transparency", frame.transparency,
+                        "order of blended surfaces: sorted (default: back to front per draw) or oit (weighted blended, no order)");
     command->add_option("--lights", frame.lights, "the many-lights scene's number of point lights (default 1024)");
     addPostOptions(command, frame);
     addLoadOptions(command, frame.load);

@@ -1,6 +1,8 @@
-// specula gallery: the same scene once per shading model (and, with --variants, once per BRDF
-// term) in one labelled contact sheet.
+// specula gallery: the same scene once per shading model, then its blended surfaces once as
+// "fade" and once as "newell-newell-sancha" (highlights kept, docs/transparency.md), and with
+// --variants once per BRDF term, in one labelled contact sheet.
 #include <filesystem>
+#include <optional>
 
 #include "Commands.h"
 #include "core/Error.h"
@@ -53,9 +55,10 @@ int runGallery(const GalleryArgs& args)
     if (environment) renderer.setEnvironment(*environment, setup::resolveBakeSettings(options), setup::cacheDirectory(options));
 
     std::vector<render::SheetTile> tiles;
-    auto shoot = [&](std::string label, const scene::MaterialShading& shading) {
+    auto shoot = [&](std::string label, const scene::MaterialShading& shading, std::optional<scene::BlendMode> blend = {}) {
         render::FrameSettings settings = base;
         settings.materialOverride = shading;
+        settings.blendModeOverride = blend;
         renderer.render(view, settings);
         tiles.push_back({std::move(label), renderer.readImage()});
         log::info("gallery: {}", tiles.back().label);
@@ -65,6 +68,12 @@ int runGallery(const GalleryArgs& args)
         shading.model = scene::ShadingModel(m);
         shoot(modelCaption(*shading.model), shading);
     }
+    // Blended surfaces (the demo's glass sphere) with alpha as coverage, then with their
+    // specular light and emission kept whole (Newell, Newell and Sancha 1972; Filament's "transparent").
+    scene::MaterialShading pbrShading = base.materialOverride;
+    pbrShading.model = scene::ShadingModel::Pbr;
+    shoot("fade (glTF: alpha is coverage)", pbrShading, scene::BlendMode::Fade);
+    shoot("newell-newell-sancha (1972)", pbrShading, scene::BlendMode::Transparent);
     if (args.variants) {
         scene::MaterialShading pbr = base.materialOverride;
         pbr.model = scene::ShadingModel::Pbr;

@@ -195,6 +195,7 @@ bool Viewer::reloadShaders()
         // material's too, and fields plain materials do not hold (the classic ks).
         for (int i = 0; i < mRenderer->materialCount(); ++i) {
             fresh->setMaterialShading(i, mRenderer->materialShading(i));
+            fresh->setMaterialBlendMode(i, mRenderer->materialBlendMode(i));
             for (int p = 0; p < render::kMaterialParameterCount; ++p) {
                 const auto parameter = render::MaterialParameter(p);
                 fresh->setMaterialParameter(i, parameter, mRenderer->materialParameter(i, parameter));
@@ -306,6 +307,13 @@ void Viewer::setMaterialShading(int index, const scene::MaterialShading& shading
     scene::Material& m = material(index);
     mRenderer->setMaterialShading(index, shading);
     m.shading = shading;
+}
+
+void Viewer::setMaterialBlendMode(int index, scene::BlendMode mode)
+{
+    scene::Material& m = material(index);
+    mRenderer->setMaterialBlendMode(index, mode);
+    if (m.alphaMode == scene::AlphaMode::Blend) m.blendMode = mode;
 }
 
 void Viewer::setMaterialParameter(int index, render::MaterialParameter parameter, const glm::vec4& value)

@@ -83,6 +83,8 @@ public:
     // Edits go to the renderer and to the plain copy below, and survive a shader reload.
     void setMaterialModel(int material, scene::ShadingModel model);
     void setMaterialShading(int material, const scene::MaterialShading& shading);
+    /// A blended material's blend mode (fade or transparent, docs/transparency.md).
+    void setMaterialBlendMode(int material, scene::BlendMode mode);
     void setMaterialParameter(int material, render::MaterialParameter parameter, const glm::vec4& value);
     /// KHR_materials_ior: the dielectric F0 from the index of refraction (and the material's
     /// KHR_materials_specular colour).

@@ -261,6 +261,16 @@ void materialsPanel(Viewer& viewer)
     termsChanged |= termCombo("F (Fresnel)", terms.fresnel, 3, scene::brdfFresnelName);
     termsChanged |= termCombo("diffuse", terms.diffuse, 3, scene::brdfDiffuseName);
     if (termsChanged) guarded(viewer, [&] { viewer.setMaterialShading(m, terms); });
+    // What a blended material's alpha scales (docs/transparency.md).
+    if (viewer.material(m).alphaMode == scene::AlphaMode::Blend) {
+        const scene::BlendMode mode = renderer.materialBlendMode(m);
+        auto name = [](scene::BlendMode b) { return b == scene::BlendMode::Transparent ? "transparent (highlights kept)" : "fade"; };
+        if (ImGui::BeginCombo("blend mode", name(mode))) {
+            for (auto b : {scene::BlendMode::Fade, scene::BlendMode::Transparent})
+                if (ImGui::Selectable(name(b), b == mode)) guarded(viewer, [&] { viewer.setMaterialBlendMode(m, b); });
+            ImGui::EndCombo();
+        }
+    }
     // Thumbnails, drawn by ImGui's backend straight from the renderer's textures (sRGB ones
     // show a little dark: the UI does not encode).
     static constexpr const char* kSlots[] = {"base colour", "metal/rough", "normal", "occlusion", "emissive"};
@@ -452,6 +462,11 @@ void postPanel(Viewer& viewer)
     ImGui::Checkbox("energy compensation", &s.energyCompensation);
     bool first = true;
     forEachPass([&](auto& pass) { passWidgets(pass, std::exchange(first, false)); }, s);
+    if (ImGui::BeginCombo("transparency", render::transparencyName(s.transparency))) {
+        for (auto t : {render::Transparency::Sorted, render::Transparency::Oit})
+            if (ImGui::Selectable(render::transparencyName(t), t == s.transparency)) s.transparency = t;
+        ImGui::EndCombo();
+    }
     if (ImGui::BeginCombo("shadow quality", shadowQualityName(s.shadows.quality))) {
         for (auto q : {ShadowQuality::Low, ShadowQuality::Medium, ShadowQuality::High})
             if (ImGui::Selectable(shadowQualityName(q), q == s.shadows.quality)) s.shadows.quality = q;

@@ -2,7 +2,9 @@
 // Forward pass: glTF metal-rough material lit by punctual lights. This file only
 // orchestrates; the BRDF lives in brdf/, light falloff in lights/.
 // Material features are compile-time variants (see Renderer's variant key): HAS_*_TEXTURE,
-// VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND, DOUBLE_SIDED; per frame, SSAO, and DOOM_INDEXED (a
+// VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND (premultiplied output; BLEND_TRANSPARENT: specular and
+// emission unscaled by alpha), TRANSMISSION (forward/transmission.glsl), DOUBLE_SIDED; OIT
+// (weighted blended transparency's two targets); per frame, SSAO, and DOOM_INDEXED (a
 // Doom frame: with SHADING_DOOM, the output is a palette index and a colour-map level, not a
 // colour; render/DoomPass). A material without a feature pays nothing for it; without
 // ALPHA_MASK there is no discard, so early depth testing stays on.
@@ -45,6 +47,10 @@ in vec4 vColor;
 
 #if defined(DOOM_INDEXED)
 layout(location = 0) out uvec4 outIndexed; // palette index, colour-map level (an RG8UI target)
+#elif defined(OIT)
+// Weighted blended OIT's targets (render/passes/ForwardPass, transparency/oit_composite.frag).
+layout(location = 0) out vec4 outColor;     // Σ premultiplied colour × weight, Σ alpha × weight
+layout(location = 1) out vec4 outRevealage; // r: Π (1 − alpha)
 #else
 layout(location = 0) out vec4 outColor;
 #endif
@@ -55,9 +61,40 @@ const float kMinPerceptualRoughness = 0.045;
 // Largest finite half float: keeps a very bright highlight from becoming Inf in RGBA16F.
 const float kHalfMax = 65504.0;
 
+// Before the unconditional includes below: the loader's #line after a file included in a
+// branch the preprocessor drops is dropped with it, and only the next include puts it right.
+#if defined(TRANSMISSION)
+#include "transmission.glsl"
+#endif
 #include "texture_uv.glsl"
 #include "shading_models.glsl"
 #include "debug_views.glsl"
+
+#if defined(OIT)
+// McGuire & Bavoil 2013, eq. 7: nearer layers weigh more, so the mean favours what is in
+// front; |z| is the view depth in metres.
+float oitWeight(float z, float alpha)
+{
+    float d = abs(z);
+    return alpha * clamp(10.0 / (1e-5 + pow(d / 5.0, 2.0) + pow(d / 200.0, 6.0)), 1e-2, 3e3);
+}
+#endif
+
+#if !defined(DOOM_INDEXED)
+// Every colour leaves through here, premultiplied by its alpha (opaque surfaces: alpha 1).
+void writeColor(vec4 premultiplied)
+{
+    premultiplied.rgb = min(premultiplied.rgb, vec3(kHalfMax));
+#if defined(OIT)
+    // The paper's listing 1: premultiplied colour and alpha, both times the weight.
+    float w = oitWeight((frame.view * vec4(vWorldPosition, 1.0)).z, premultiplied.a);
+    outColor = premultiplied * w;
+    outRevealage = vec4(premultiplied.a);
+#else
+    outColor = premultiplied;
+#endif
+}
+#endif
 
 vec3 materialEmissive()
 {
@@ -133,7 +170,7 @@ void main()
 
 #if defined(DEBUG_VIEW)
     // One input or BRDF term instead of the frame (debug_views.glsl).
-    outColor = vec4(debugViewValue(baseColor.rgb, metallic, perceptualRoughness, n, v, occlusion, materialEmissive()), 1.0);
+    writeColor(vec4(debugViewValue(baseColor.rgb, metallic, perceptualRoughness, n, v, occlusion, materialEmissive()), 1.0));
 #elif defined(DOOM_INDEXED)
     // Doom's 8-bit frame (doom.glsl; the colour-map pass makes the colours). An index cannot
     // be blended: a blended material is cut out at half coverage instead.
@@ -141,7 +178,8 @@ void main()
     outIndexed = uvec4(doomIndexLevel(baseColor.rgb), 0u, 0u);
 #elif defined(SHADING_CLASSIC)
     // The models before physically based shading (shading_models.glsl): no BRDF, no split sum.
-    outColor = vec4(min(shadeClassic(baseColor.rgb, metallic, perceptualRoughness, n, v, occlusion, materialEmissive()), vec3(kHalfMax)), alpha);
+    // They have no lobes apart: a blended one fades (alpha scales all of it).
+    writeColor(vec4(min(shadeClassic(baseColor.rgb, metallic, perceptualRoughness, n, v, occlusion, materialEmissive()), vec3(kHalfMax)), 1.0) * alpha);
 #else
 
     SurfaceBrdf surface = makeSurfaceBrdf(baseColor.rgb, metallic, perceptualRoughness, material.specular);
@@ -169,7 +207,8 @@ void main()
     const vec3 energyCompensation = vec3(1.0);
 #endif
 
-    vec3 color = vec3(0.0);
+    // The diffuse and specular parts apart: blending scales them differently ("transparent").
+    vec3 diffuseLight = vec3(0.0), specularLight = vec3(0.0);
     LightList list = lightList(vWorldPosition, gl_FragCoord);
     for (uint k = 0u; k < list.count; ++k) {
         uint index = lightListIndex(list, k);
@@ -181,11 +220,12 @@ void main()
         illuminance *= shadowVisibility(light, vWorldPosition, n, l);
         vec3 diffuse, specular;
         evaluateBrdfLobes(surface, n, v, l, diffuse, specular);
-        color += (diffuse + specular * energyCompensation) * illuminance * NoL;
+        diffuseLight += diffuse * illuminance * NoL;
+        specularLight += specular * energyCompensation * illuminance * NoL;
     }
 
     // Constant ambient (non-physical, 0 unless a scene asks): lights the diffuse part only.
-    color += frame.ambient.rgb * surface.diffuseColor * occlusion;
+    diffuseLight += frame.ambient.rgb * surface.diffuseColor * occlusion;
 
 #if defined(IBL)
     vec3 r = reflect(-v, n);
@@ -205,11 +245,28 @@ void main()
 #if defined(HAS_NORMAL_TEXTURE)
     specularAo *= horizonFade(r, flip ? -normalize(vNormal) : normalize(vNormal));
 #endif
-    color += (diffuseIbl * occlusion + specularIbl * specularAo) * environment.params.x;
+    diffuseLight += diffuseIbl * occlusion * environment.params.x;
+    specularLight += specularIbl * specularAo * environment.params.x;
 #endif
 
-    color += materialEmissive();
+#if defined(TRANSMISSION)
+    // KHR_materials_transmission: that fraction of the dielectric's diffuse light is replaced
+    // by light from behind, tinted by the base colour and let through by the Fresnel factor at
+    // the viewing angle, 1 − F(n·v) (Schlick with F0 from the ior; exact at normal incidence).
+    float transmission = material.transmission.x * (1.0 - metallic);
+    vec3 behind = transmittedRadiance(n, v, vWorldPosition, material.transmission.y, material.transmission.z, iblRoughness);
+    vec3 transmitted = transmission * (1.0 - brdfF(surface, NoV)) * baseColor.rgb * behind;
+    diffuseLight = diffuseLight * (1.0 - transmission) + transmitted;
+#endif
 
-    outColor = vec4(min(color, vec3(kHalfMax)), alpha);
+    vec3 emissive = materialEmissive();
+#if defined(BLEND_TRANSPARENT)
+    // Alpha is the opacity of the diffuse part only: reflection and emission stay whole, as a
+    // clear glass keeps its highlights (Newell, Newell & Sancha 1972; Filament's "transparent").
+    writeColor(vec4(min(diffuseLight, vec3(kHalfMax)) * alpha + specularLight + emissive, alpha));
+#else
+    // Alpha is coverage (the glTF specification's "over", Filament's "fade"): all of it scales.
+    writeColor(vec4(min(diffuseLight + specularLight + emissive, vec3(kHalfMax)), 1.0) * alpha);
+#endif
 #endif
 }

@@ -37,7 +37,8 @@
 #define SPECULA_UNIT_CLUSTERS 11         // the cluster lists' texel view, R32UI (lights/light_list.glsl)
 #define SPECULA_UNIT_IRRADIANCE 16       // the irradiance cube (ibl/ibl.glsl); GL 4.5 promises 16 units, every
                                          // desktop driver has 32 (Renderer checks: gl::maxTextureUnits)
-#define SPECULA_UNIT_ENVIRONMENT_CUBE 17 // the environment cube, box-filtered mips (ibl/importance.glsl)
+#define SPECULA_UNIT_TRANSMISSION 17     // forward pass: the opaque frame and its mips (forward/transmission.glsl)
+#define SPECULA_UNIT_ENVIRONMENT_CUBE 18 // the environment cube, box-filtered mips (ibl/importance.glsl)
 #define SPECULA_UNIT_SSAO 12             // forward pass: the blurred ambient occlusion
 #define SPECULA_BINDING_SSAO 5           // uniform buffer: SsaoData
 #define SPECULA_BINDING_EXPOSURE_PARAMS 6 // uniform buffer: ExposureParams

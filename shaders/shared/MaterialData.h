@@ -18,6 +18,8 @@ SPECULA_SHARED_BEGIN
 #define SPECULA_MATERIAL_ALPHA_MASK 64u
 #define SPECULA_MATERIAL_ALPHA_BLEND 128u
 #define SPECULA_MATERIAL_USE_VERTEX_COLOR 256u
+#define SPECULA_MATERIAL_BLEND_TRANSPARENT 512u // blended: specular and emission not scaled by alpha
+#define SPECULA_MATERIAL_TRANSMISSION 1024u     // KHR_materials_transmission factor above 0
 
 struct GpuMaterial {
     vec4 baseColorFactor;
@@ -31,10 +33,14 @@ struct GpuMaterial {
                           // carries KHR_materials_ior: x (F0(ior) / 0.04), so 0.04 x rgb is the dielectric F0
     vec4 phong;           // Phong, Blinn-Phong, Gouraud, flat: rgb dielectric specular colour ks,
                           // a shininess (0 = from roughness)
+    vec4 transmission;    // x KHR_materials_transmission factor, y ior (refraction; 1.5 by default),
+                          // z KHR_materials_volume thickness (object-space metres, 0 = thin-walled),
+                          // w attenuation distance (metres, 0 = infinite)
+    vec4 attenuation;     // rgb KHR_materials_volume attenuation colour
 };
 
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::GpuMaterial) == 17 * 16);
+static_assert(sizeof(specula::shared::GpuMaterial) == 19 * 16);
 #endif

@@ -195,6 +195,12 @@ void State::apply(const PipelineDesc& p)
             glEnable(GL_BLEND);
             glBlendFunc(GL_ONE, GL_ONE);
             break;
+        case BlendMode::WeightedOit:
+            // Per attachment; the other modes' glBlendFunc sets every attachment back.
+            glEnable(GL_BLEND);
+            glBlendFunci(0, GL_ONE, GL_ONE);
+            glBlendFunci(1, GL_ZERO, GL_ONE_MINUS_SRC_COLOR);
+            break;
         }
     }
     if (first || p.framebufferSrgb != mPipeline.framebufferSrgb)

@@ -16,7 +16,10 @@ class VertexArray;
 
 enum class CompareOp : uint8_t { Less, LessEqual, Equal, Always };
 enum class CullMode : uint8_t { None, Back, Front };
-enum class BlendMode : uint8_t { None, Alpha, PremultipliedAlpha, Additive };
+/// WeightedOit: weighted blended order-independent transparency's two targets (McGuire &
+/// Bavoil 2013): attachment 0 sums (ONE, ONE), attachment 1 multiplies by 1 − source (ZERO,
+/// ONE_MINUS_SRC_COLOR).
+enum class BlendMode : uint8_t { None, Alpha, PremultipliedAlpha, Additive, WeightedOit };
 
 enum class ImageAccess : uint8_t { ReadOnly, WriteOnly, ReadWrite };
 
@@ -91,7 +94,7 @@ public:
     void resetCounters() { mDrawCalls = 0; }
 
 private:
-    static constexpr int kUnits = 16;
+    static constexpr int kUnits = 32; // units up to SPECULA_UNIT_TRANSMISSION (shaders/shared/Bindings.h)
     uint32_t mProgram = ~0u;
     uint32_t mVertexArray = ~0u;
     uint32_t mFramebuffer = ~0u;

@@ -28,15 +28,21 @@ DrawList DrawList::build(const GpuScene& scene, const glm::mat4& view, const glm
     const Frustum frustum(viewProjection);
     for (const DrawItem& item : scene.draws()) {
         const GpuPrimitive& p = scene.primitives()[size_t(item.primitive)];
-        const bool blended = scene.materials()[size_t(p.material)].alphaMode == scene::AlphaMode::Blend;
-        if (blended != (filter == DrawFilter::Blended)) continue;
-        if (filter == DrawFilter::ShadowCasters && !item.castShadows) continue;
+        const MaterialBinding& material = scene.materials()[size_t(p.material)];
+        const bool blended = material.alphaMode == scene::AlphaMode::Blend;
+        const bool transmissive = (material.features & SPECULA_MATERIAL_TRANSMISSION) != 0;
+        switch (filter) {
+        case DrawFilter::Opaque: if (blended || transmissive) continue; break;
+        case DrawFilter::Blended: if (!blended || transmissive) continue; break;
+        case DrawFilter::Transmissive: if (!transmissive) continue; break;
+        case DrawFilter::ShadowCasters: if (!castsShadow(material) || !item.castShadows) continue; break;
+        }
         if (!frustum.intersects(p.bounds.transformed(item.world))) continue;
         const glm::vec3 center = glm::vec3(item.world * glm::vec4(p.bounds.center(), 1.0f));
         // View-space z: negative in front of the camera, most negative farthest.
         const float z = (view * glm::vec4(center, 1.0f)).z;
         uint64_t key = 0;
-        if (filter == DrawFilter::Blended) {
+        if (filter == DrawFilter::Blended || filter == DrawFilter::Transmissive) {
             key = orderedBits(z); // back to front
         } else {
             const gl::Program* program = programs[size_t(p.material)].program;
@@ -55,7 +61,7 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
 {
     size_t triangles = 0;
     int boundMaterial = -1;
-    const bool blendDraws = mFilter == DrawFilter::Blended && options.blend;
+    const bool blendList = mFilter == DrawFilter::Blended || mFilter == DrawFilter::Transmissive;
     for (const DrawCommand& command : mCommands) {
         const DrawItem& item = *command.item;
         const GpuPrimitive& p = scene.primitives()[size_t(item.primitive)];
@@ -72,8 +78,9 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
         pipeline.frontFaceClockwise = item.mirrored;
         pipeline.depthBiasSlope = options.depthBiasSlope;
         pipeline.depthBiasConstant = options.depthBiasConstant;
-        if (blendDraws) {
-            pipeline.blend = gl::BlendMode::Alpha;
+        if (blendList && options.blend && m.alphaMode == scene::AlphaMode::Blend) {
+            pipeline.blend = options.blendOutput == BlendOutput::WeightedOit ? gl::BlendMode::WeightedOit
+                                                                             : gl::BlendMode::PremultipliedAlpha;
             pipeline.noDepthWrite = true;
         }
         state.apply(pipeline);

@@ -5,8 +5,8 @@
 //
 // A list holds the frustum-visible draws of the scene that pass a filter, each with a 64-bit
 // sort key. Opaque and masked draws sort by program, then material (fewer state changes), then
-// front to back (early depth rejection); blended draws back to front by the view depth of their
-// bounds' centre, ties in scene order.
+// front to back (early depth rejection); blended and transmissive draws back to front by the
+// view depth of their bounds' centre, ties in scene order.
 #include <cstdint>
 #include <vector>
 
@@ -25,9 +25,10 @@ struct DrawItem;
 struct GpuPrimitive;
 
 enum class DrawFilter : uint8_t {
-    Opaque,        ///< opaque and alpha-masked surfaces
-    Blended,       ///< alpha-blended surfaces
-    ShadowCasters, ///< opaque and alpha-masked surfaces that cast shadows (blended ones do not)
+    Opaque,        ///< opaque and alpha-masked surfaces without transmission
+    Blended,       ///< alpha-blended surfaces without transmission
+    Transmissive,  ///< surfaces with transmission (KHR_materials_transmission), blended or not
+    ShadowCasters, ///< surfaces that cast shadows (render::castsShadow: not blended, transmission below 0.5)
 };
 
 struct DrawCommand {
@@ -52,11 +53,18 @@ enum class MaterialTextures : uint8_t {
     BaseColorIfMasked ///< only a masked material's base colour (a depth pass's alpha test)
 };
 
+/// How a list's blended draws combine with the target.
+enum class BlendOutput : uint8_t {
+    Premultiplied, ///< premultiplied alpha over the target (pbr.frag premultiplies), no depth writes
+    WeightedOit,   ///< weighted blended OIT's accumulation and revealage targets (McGuire & Bavoil 2013)
+};
+
 struct SubmitOptions {
     MaterialTextures textures = MaterialTextures::All;
-    /// Blended draws blend (straight alpha) and do not write depth; false: drawn like cutouts
-    /// (a Doom frame's indices cannot blend).
+    /// Blended draws blend and do not write depth; false: drawn like cutouts (a Doom frame's
+    /// indices cannot blend).
     bool blend = true;
+    BlendOutput blendOutput = BlendOutput::Premultiplied;
     /// Textures bound where a material has none, for MaterialTextures::All.
     const gl::Texture* white = nullptr;
     const gl::Texture* flatNormal = nullptr;

@@ -137,6 +137,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
         gpu.specular = glm::vec4(m.specularColorFactor, m.specularFactor);
         // KHR_materials_ior: the shader's dielectric F0 is 0.04 x specular.rgb (x factor).
         if (m.ior) gpu.specular = glm::vec4(m.specularColorFactor * (scene::f0FromIor(*m.ior) / 0.04f), m.specularFactor);
+        gpu.transmission = glm::vec4(m.transmissionFactor, m.ior.value_or(1.5f), m.thickness, m.attenuationDistance);
+        gpu.attenuation = glm::vec4(m.attenuationColor, 0.0f);
         // Classic models' specular colour: mid grey, a plastic highlight (Phong 1975's ks).
         gpu.phong = glm::vec4(glm::vec3(0.5f), m.shininess);
         for (int slot = 0; slot < 5; ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
@@ -144,6 +146,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         MaterialBinding binding;
         binding.alphaMode = m.alphaMode;
         binding.doubleSided = m.doubleSided;
+        binding.transmission = m.transmissionFactor;
         const struct {
             const scene::TextureRef& ref;
             TextureSlot slot;
@@ -168,6 +171,9 @@ GpuScene::GpuScene(const scene::Scene& scene)
         if (m.doubleSided) gpu.flags.x |= SPECULA_MATERIAL_DOUBLE_SIDED;
         if (m.alphaMode == scene::AlphaMode::Mask) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_MASK;
         if (m.alphaMode == scene::AlphaMode::Blend) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_BLEND;
+        if (m.alphaMode == scene::AlphaMode::Blend && m.blendMode == scene::BlendMode::Transparent)
+            gpu.flags.x |= SPECULA_MATERIAL_BLEND_TRANSPARENT;
+        if (m.transmissionFactor > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_TRANSMISSION;
         // The shading model and BRDF terms select the variant too (not read by the shaders).
         binding.features = gpu.flags.x | packShading(m.shading);
         gpuMaterials.push_back(gpu);
@@ -242,11 +248,16 @@ GpuScene::GpuScene(const scene::Scene& scene)
             mTriangles += p.count / 3;
             const scene::Bounds world = p.bounds.transformed(item.world);
             mBounds.extend(world);
-            if (item.castShadows && mMaterials[size_t(p.material)].alphaMode != scene::AlphaMode::Blend) mCasterBounds.extend(world);
+            if (item.castShadows && castsShadow(mMaterials[size_t(p.material)])) mCasterBounds.extend(world);
         }
     }
     log::debug("GPU scene: {} primitives, {} draws, {} materials, {} triangles", mPrimitives.size(), mDraws.size(),
                mMaterials.size(), mTriangles);
+}
+
+bool castsShadow(const MaterialBinding& material)
+{
+    return material.alphaMode != scene::AlphaMode::Blend && material.transmission < kTransmissionShadowLimit;
 }
 
 void GpuScene::setShading(int material, const scene::MaterialShading& shading)
@@ -255,6 +266,21 @@ void GpuScene::setShading(int material, const scene::MaterialShading& shading)
         if (mRecordMaterial[record] != material) continue;
         uint32_t& features = mMaterials[record].features;
         features = (features & ~kShadingFeatureMask) | packShading(shading);
+    }
+}
+
+void GpuScene::setBlendMode(int material, scene::BlendMode mode)
+{
+    for (size_t record = 0; record < mMaterials.size(); ++record) {
+        if (mRecordMaterial[record] != material || mMaterials[record].alphaMode != scene::AlphaMode::Blend) continue;
+        uint32_t& features = mMaterials[record].features;
+        features = mode == scene::BlendMode::Transparent ? features | SPECULA_MATERIAL_BLEND_TRANSPARENT
+                                                         : features & ~uint32_t(SPECULA_MATERIAL_BLEND_TRANSPARENT);
+        // The record's flags say the same (the shader reads the variant, tools read the record).
+        mRecords[record].flags.x = (mRecords[record].flags.x & ~uint32_t(SPECULA_MATERIAL_BLEND_TRANSPARENT)) |
+                                   (features & SPECULA_MATERIAL_BLEND_TRANSPARENT);
+        mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
+                               &mRecords[record].flags.x);
     }
 }
 

@@ -28,8 +28,16 @@ struct MaterialBinding {
     std::array<const gl::Sampler*, size_t(TextureSlot::Count)> samplers{};
     scene::AlphaMode alphaMode = scene::AlphaMode::Opaque;
     bool doubleSided = false;
+    float transmission = 0.0f; ///< KHR_materials_transmission factor
     uint32_t features = 0; ///< SPECULA_MATERIAL_* bits: selects the shader variant
 };
+
+/// The shadow rule for surfaces light passes through (docs/transparency.md): a surface casts
+/// where it stops at least half of the light. Blended surfaces cast none (their alpha varies
+/// per texel and a depth map holds no fraction); transmissive ones cast none from a
+/// transmission factor of 0.5 up, and cast like opaque ones below it.
+constexpr float kTransmissionShadowLimit = 0.5f;
+bool castsShadow(const MaterialBinding& material);
 
 struct DrawItem {
     int primitive = 0;
@@ -62,6 +70,8 @@ public:
     const shared::GpuMaterial& record(int material) const { return mRecords[size_t(material)]; }
     /// Replaces the shading bits of `material`'s (and its copies') variant key.
     void setShading(int material, const scene::MaterialShading& shading);
+    /// Sets or clears SPECULA_MATERIAL_BLEND_TRANSPARENT of a blended material (and its copies).
+    void setBlendMode(int material, scene::BlendMode mode);
     /// Writes `size` bytes at `offset` within `material`'s record (and its copies'), in the
     /// CPU copy and in the buffer: no other byte of the buffer is written.
     void writeMaterial(int material, size_t offset, size_t size, const void* data);

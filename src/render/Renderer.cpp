@@ -36,6 +36,18 @@ std::optional<IblSpecular> parseIblSpecular(std::string_view name)
     return std::nullopt;
 }
 
+const char* transparencyName(Transparency transparency)
+{
+    return transparency == Transparency::Oit ? "oit" : "sorted";
+}
+
+std::optional<Transparency> parseTransparency(std::string_view name)
+{
+    if (name == "sorted") return Transparency::Sorted;
+    if (name == "oit") return Transparency::Oit;
+    return std::nullopt;
+}
+
 bool isDoomFrame(const FrameSettings& s)
 {
     return s.materialOverride.model == scene::ShadingModel::Doom && !isMaterialDebugView(s.debugView);
@@ -85,6 +97,8 @@ FrameSettings effectiveSettings(const FrameSettings& requested)
     // The Doom model's frame holds only palette colours: one sample a pixel (a resolve would
     // blend them) and, as for the views below, nothing that scales or curves values.
     if (doom) s.msaa = 1;
+    // Weighted blended OIT needs blending, which indices cannot do; the views show values, one layer.
+    if (isMaterialDebugView(s.debugView) || doom) s.transparency = Transparency::Sorted;
     if (isMaterialDebugView(s.debugView) || doom) {
         // Material and BRDF views show values, not light: nothing may scale or curve them.
         s.exposureEv = 0.0f;
@@ -187,6 +201,7 @@ struct Renderer::Impl {
 Renderer::Renderer() : mImpl(std::make_unique<Impl>())
 {
     // The forward pass binds units up to SPECULA_UNIT_ENVIRONMENT_CUBE (shaders/shared/Bindings.h).
+    static_assert(SPECULA_UNIT_ENVIRONMENT_CUBE > SPECULA_UNIT_TRANSMISSION && SPECULA_UNIT_TRANSMISSION > SPECULA_UNIT_IRRADIANCE);
     if (gl::maxTextureUnits() <= SPECULA_UNIT_ENVIRONMENT_CUBE)
         throw Error("this OpenGL implementation has {} texture units; Specula needs {}", gl::maxTextureUnits(),
                     SPECULA_UNIT_ENVIRONMENT_CUBE + 1);
@@ -421,6 +436,20 @@ void Renderer::setMaterialShading(int material, const scene::MaterialShading& sh
 {
     if (material < 0 || material >= materialCount()) return;
     mImpl->stores.scene->setShading(material, shading);
+}
+
+scene::BlendMode Renderer::materialBlendMode(int material) const
+{
+    if (material < 0 || material >= materialCount()) return scene::BlendMode::Fade;
+    return mImpl->stores.scene->materials()[size_t(material)].features & SPECULA_MATERIAL_BLEND_TRANSPARENT
+               ? scene::BlendMode::Transparent
+               : scene::BlendMode::Fade;
+}
+
+void Renderer::setMaterialBlendMode(int material, scene::BlendMode mode)
+{
+    if (material < 0 || material >= materialCount()) return;
+    mImpl->stores.scene->setBlendMode(material, mode);
 }
 
 glm::vec4 Renderer::materialParameter(int material, MaterialParameter parameter) const

@@ -69,6 +69,14 @@ enum class LightCulling {
     None,      ///< every light of the frame (brute force: for comparisons and measurements)
 };
 
+/// How blended surfaces are ordered (docs/transparency.md).
+enum class Transparency {
+    Sorted, ///< back to front by the view depth of each draw's bounds (the default)
+    Oit,    ///< weighted blended order-independent transparency (McGuire & Bavoil 2013): no order
+};
+const char* transparencyName(Transparency transparency);
+std::optional<Transparency> parseTransparency(std::string_view name);
+
 /// What a frame looks like. Zero values are not all defaults; use the initialisers.
 struct FrameSettings {
     int width = 1280;
@@ -85,6 +93,10 @@ struct FrameSettings {
     /// makes the frame Doom's 8-bit frame (render/DoomPass): one sample a pixel, palette
     /// colours only, no exposure, tone curve, bloom, FXAA or skybox.
     scene::MaterialShading materialOverride;
+    /// Overrides every blended material's blend mode for the frame (the gallery's fade and
+    /// newell-newell-sancha tiles); unset: each material's own.
+    std::optional<scene::BlendMode> blendModeOverride;
+    Transparency transparency = Transparency::Sorted;
     glm::vec3 background{0.0f};            ///< radiance behind the scene, cd/m²
     glm::vec3 ambient{0.0f};               ///< constant ambient radiance for the diffuse lobe
     bool gizmos = false;                   ///< draw every light as a disc in its colour, with rods for directions and cones (BillboardPass)
@@ -238,6 +250,10 @@ public:
     scene::MaterialShading materialShading(int material) const;
     /// Changes one material's shading model and BRDF terms (its shader variant only).
     void setMaterialShading(int material, const scene::MaterialShading& shading);
+    /// A blended material's blend mode (its shader variant); Fade for the others.
+    scene::BlendMode materialBlendMode(int material) const;
+    /// Changes a blended material's blend mode; nothing for a material that does not blend.
+    void setMaterialBlendMode(int material, scene::BlendMode mode);
     /// Rewrites one parameter in one material's record of the material buffer: that field's
     /// bytes and no others (unused components of `value` are ignored).
     void setMaterialParameter(int material, MaterialParameter parameter, const glm::vec4& value);

@@ -97,6 +97,18 @@ Scene makeDemoScene()
             addShape(scene, sphere, material, glm::translate(glm::mat4(1.0f), position), "sphere");
         }
     }
+    // A clear glass sphere right of the grid, before the trees: alpha 0.1, blended "transparent", so its diffuse light is a
+    // tenth and its highlights are whole (Newell, Newell and Sancha 1972; docs/transparency.md).
+    // The gallery's fade tile shows it as alpha coverage would: highlights a tenth too.
+    Material glass;
+    glass.name = "glass";
+    glass.baseColorFactor = glm::vec4(0.92f, 0.96f, 1.0f, 0.1f);
+    glass.metallicFactor = 0.0f;
+    glass.roughnessFactor = 0.05f;
+    glass.alphaMode = AlphaMode::Blend;
+    glass.blendMode = BlendMode::Transparent;
+    addShape(scene, sphere, glass, glm::translate(glm::mat4(1.0f), glm::vec3(3.4f, 2.1f, 1.0f)), "glass sphere");
+
     Material floor;
     floor.name = "floor";
     floor.baseColorFactor = glm::vec4(0.35f, 0.35f, 0.38f, 1.0f);

@@ -6,7 +6,8 @@
 
 namespace specula::scene {
 
-/// The demo: a 5x5 grid of spheres (metallic rising by row, roughness by column), a floor,
+/// The demo: a 5x5 grid of spheres (metallic rising by row, roughness by column), a clear
+/// glass sphere right of them (blended, "transparent": highlights kept), a floor,
 /// three coloured point lights, a spot light and a directional light, a camera, and one
 /// billboard group of each kind (axis-aligned trees, point-sprite lanterns, leaning
 /// arbitrary-axis neon rods).

@@ -1,5 +1,6 @@
 // glTF import: images, samplers, textures and materials, with their extensions.
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <cstring>
@@ -257,6 +258,25 @@ void Importer::convertMaterials()
         if (const tinygltf::Value* ior = extension(source.extensions, "KHR_materials_ior")) {
             const double value = number(*ior, "ior").value_or(1.5);
             if (value >= 1.0 && value != 1.5) material.ior = float(value);
+        }
+        // KHR_materials_transmission and KHR_materials_volume (factors; their textures are not
+        // read and say so). Volume without transmission changes nothing (the extension's rule).
+        if (const tinygltf::Value* transmission = extension(source.extensions, "KHR_materials_transmission")) {
+            material.transmissionFactor = float(std::clamp(number(*transmission, "transmissionFactor").value_or(0.0), 0.0, 1.0));
+            if (member(*transmission, "transmissionTexture"))
+                warn("{} has a transmissionTexture, which is not read; its transmissionFactor is used", where);
+        }
+        if (const tinygltf::Value* volume = extension(source.extensions, "KHR_materials_volume")) {
+            material.thickness = float(std::max(number(*volume, "thicknessFactor").value_or(0.0), 0.0));
+            // The extension's default distance is +infinity, which glTF's JSON cannot write: 0 holds it here.
+            const double distance = number(*volume, "attenuationDistance").value_or(0.0);
+            material.attenuationDistance = std::isfinite(distance) && distance > 0.0 ? float(distance) : 0.0f;
+            if (const tinygltf::Value* color = member(*volume, "attenuationColor");
+                color && color->IsArray() && color->ArrayLen() == 3)
+                for (int c = 0; c < 3; ++c)
+                    if (color->Get(c).IsNumber()) material.attenuationColor[c] = float(std::clamp(color->Get(c).GetNumberAsDouble(), 0.0, 1.0));
+            if (member(*volume, "thicknessTexture"))
+                warn("{} has a thicknessTexture, which is not read; its thicknessFactor is used", where);
         }
         material.normalScale = float(source.normalTexture.scale);
         material.occlusionStrength = float(source.occlusionTexture.strength);

@@ -55,6 +55,18 @@ struct TextureRef {
 
 enum class AlphaMode { Opaque, Mask, Blend };
 
+/// How a blended surface (AlphaMode::Blend) combines with what is behind it (docs/transparency.md).
+/// Both write premultiplied alpha; they differ in what alpha scales.
+enum class BlendMode {
+    /// Alpha is coverage: everything the surface sends (diffuse, specular, emission) is scaled by
+    /// it, the "over" operator of the glTF specification. glTF's default.
+    Fade,
+    /// Alpha is the diffuse part's opacity only: specular reflection and emission are added in
+    /// full, so a clear glass keeps its highlights (Newell, Newell and Sancha 1972; Filament's
+    /// "transparent").
+    Transparent,
+};
+
 struct Material {
     std::string name;
     glm::vec4 baseColorFactor{1.0f};
@@ -70,7 +82,17 @@ struct Material {
     float occlusionStrength = 1.0f;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
+    BlendMode blendMode = BlendMode::Fade; ///< AlphaMode::Blend only
     bool doubleSided = false;
+    /// KHR_materials_transmission: the fraction of light that passes through the dielectric
+    /// part instead of being scattered diffusely (0 = none: an ordinary surface).
+    float transmissionFactor = 0.0f;
+    /// KHR_materials_volume: thickness of the volume under the surface in object-space metres
+    /// (0 = thin-walled: light passes straight through), and its Beer–Lambert attenuation:
+    /// light keeps attenuationColor after attenuationDistance metres (0 = infinite: no loss).
+    float thickness = 0.0f;
+    float attenuationDistance = 0.0f;
+    glm::vec3 attenuationColor{1.0f};
     TextureRef baseColorTexture;         ///< sRGB
     TextureRef metallicRoughnessTexture; ///< G = roughness, B = metallic
     TextureRef normalTexture;

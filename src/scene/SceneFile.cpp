@@ -182,7 +182,7 @@ SceneDocument loadSceneText(const std::string& text, const fs::path& path, const
     if (const auto environment = root.object("environment", {"color", "file", "intensity", "rotation", "ibl", "sun"}))
         document.environment = parseEnvironment(*environment, files);
     if (const auto render = root.object("render", {"width", "height", "msaa", "exposure", "tonemap", "brdfG", "shading",
-                                                   "defaultLights", "ev100"})) {
+                                                   "defaultLights", "ev100", "transparency"})) {
         const auto cameraExposure = document.render.cameraExposure;
         document.render = parseRender(*render);
         document.render.cameraExposure = cameraExposure;

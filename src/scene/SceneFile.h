@@ -21,6 +21,7 @@ struct RenderSettings {
     std::optional<std::string> brdfG;    ///< smith-ggx (default) or schlick-ggx
     std::optional<std::string> shading;  ///< every material's shading model for the frame (as --shading)
     std::optional<bool> defaultLights;   ///< false = never add the default light rig
+    std::optional<std::string> transparency; ///< sorted | oit: how blended surfaces are ordered (as --transparency)
     /// Physical camera exposure as EV100 ("render": {"ev100"}), or from the camera's
     /// aperture (f-number), shutter (seconds) and ISO ("camera": {...}); at most one of them.
     std::optional<float> ev100;

@@ -73,9 +73,10 @@ Material defaultShapeMaterial(const std::string& name)
 
 /// The keys of a material object; a model's material overrides take all but "name".
 const std::vector<std::string_view> kMaterialKeys = {"name", "baseColor", "metallic", "roughness", "emissive",
-                                                     "emissiveStrength", "doubleSided", "alphaMode", "alphaCutoff",
+                                                     "emissiveStrength", "doubleSided", "alphaMode", "alphaCutoff", "blendMode",
                                                      "shading", "brdfD", "brdfG", "brdfF", "brdfDiffuse", "ior",
-                                                     "shininess", "sectorLight"};
+                                                     "shininess", "sectorLight", "transmission", "thickness",
+                                                     "attenuationDistance", "attenuationColor"};
 
 /// Sets the material's fields that `object` gives; the others keep their values (a shape's
 /// defaults, or a glTF model's material with its textures).
@@ -95,6 +96,18 @@ void applyMaterialKeys(const Object& object, Material& material)
         material.alphaMode = *alphaMode == "mask" ? AlphaMode::Mask : *alphaMode == "blend" ? AlphaMode::Blend : AlphaMode::Opaque;
     object.onlyFor("alphaCutoff", material.alphaMode == AlphaMode::Mask, "alphaMode \"mask\"");
     material.alphaCutoff = object.nonNegative("alphaCutoff").value_or(material.alphaCutoff);
+    // Blend mode (docs/transparency.md): what a blended surface's alpha scales.
+    object.onlyFor("blendMode", material.alphaMode == AlphaMode::Blend, "alphaMode \"blend\"");
+    if (const auto blendMode = object.choice("blendMode", {"fade", "transparent"}))
+        material.blendMode = *blendMode == "transparent" ? BlendMode::Transparent : BlendMode::Fade;
+    // Transmission and volume (KHR_materials_transmission, KHR_materials_volume).
+    material.transmissionFactor = object.unitInterval("transmission").value_or(material.transmissionFactor);
+    material.thickness = object.nonNegative("thickness").value_or(material.thickness);
+    material.attenuationDistance = object.nonNegative("attenuationDistance").value_or(material.attenuationDistance);
+    if (const auto color = object.color("attenuationColor")) {
+        if (glm::any(glm::greaterThan(*color, glm::vec3(1.0f)))) object.fail("attenuationColor", "must be between 0 and 1");
+        material.attenuationColor = *color;
+    }
     // Material system (docs/scene-format.md): shading model, BRDF terms, F0 from an IOR, Phong exponent.
     if (const auto v = object.choice("shading", {"pbr", "unlit", "flat", "gouraud", "phong", "blinn-phong", "doom"}))
         material.shading.model = parseShadingModel(*v);

@@ -290,6 +290,7 @@ RenderSettings parseRender(const Object& object)
     render.brdfG = object.choice("brdfG", {"smith-ggx", "smith-ggx-correlated", "schlick-ggx", "neumann", "kelemen", "cook-torrance", "implicit"});
     render.shading = object.choice("shading", {"pbr", "unlit", "flat", "gouraud", "phong", "blinn-phong", "doom"});
     render.defaultLights = object.boolean("defaultLights");
+    render.transparency = object.choice("transparency", {"sorted", "oit"});
     render.ev100 = object.number("ev100");
     return render;
 }

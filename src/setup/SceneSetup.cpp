@@ -110,6 +110,12 @@ void resolvePostSettings(const scene::SceneDocument& document, const FrameOption
         else if (c == "none") s.lightCulling = render::LightCulling::None;
         else throw Error("--light-culling must be clustered or none (got '{}')", c);
     }
+    // --transparency, else the scene's render.transparency (checked as the file was read).
+    if (const auto& t = options.transparency ? options.transparency : document.render.transparency) {
+        const auto transparency = render::parseTransparency(*t);
+        if (!transparency) throw Error("--transparency must be sorted or oit (got '{}')", *t);
+        s.transparency = *transparency;
+    }
     if (options.lightCutoff) {
         const float c = *options.lightCutoff;
         if (!(c >= 0.0f && c < 1.0f)) throw Error("--light-cutoff must be at least 0 and below 1 (got {})", double(c));

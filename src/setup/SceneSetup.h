@@ -52,6 +52,7 @@ struct FrameOptions {
     scene::LoadOptions load;
     std::optional<std::string> lightCulling;  ///< clustered | none (--light-culling)
     std::optional<float> lightCutoff;         ///< --light-cutoff
+    std::optional<std::string> transparency;  ///< sorted | oit (--transparency)
     std::optional<int> lights;                ///< the many-lights scene's count (--lights)
 };
 

@@ -165,14 +165,16 @@ double diffuseLobe(Diffuse d, double r, double NoV, double NoL, double LoH, doub
 
 dvec3 evaluate(const Surface& s, const dvec3& n, const dvec3& v, const dvec3& l)
 {
-    const Lobes lobes = evaluateLobes(s, n, v, l);
-    return lobes.diffuse + lobes.specular;
+    dvec3 diffuse, specular;
+    evaluateLobes(s, n, v, l, diffuse, specular);
+    return diffuse + specular;
 }
 
-Lobes evaluateLobes(const Surface& s, const dvec3& n, const dvec3& v, const dvec3& l)
+void evaluateLobes(const Surface& s, const dvec3& n, const dvec3& v, const dvec3& l, dvec3& diffuse, dvec3& specular)
 {
+    diffuse = specular = dvec3(0.0);
     const double NoL = std::clamp(glm::dot(n, l), 0.0, 1.0);
-    if (NoL <= 0.0) return {};
+    if (NoL <= 0.0) return;
     const double r = std::clamp(s.perceptualRoughness, kMinPerceptualRoughness, 1.0);
     const double alpha = r * r;
     const dvec3 h = glm::normalize(v + l);
@@ -187,7 +189,8 @@ Lobes evaluateLobes(const Surface& s, const dvec3& n, const dvec3& v, const dvec
     const double V = s.imageBased ? visibilityImageBased(s.geometry, NoV, NoL, NoH, VoH, r)
                                   : visibility(s.geometry, NoV, NoL, NoH, VoH, r);
     const double Fd = diffuseLobe(s.diffuse, r, NoV, NoL, VoH, glm::dot(v, l));
-    return {(dvec3(1.0) - F) * diffuseColor * Fd, F * (D * V)};
+    diffuse = (dvec3(1.0) - F) * diffuseColor * Fd;
+    specular = F * (D * V);
 }
 
 dvec3 evaluateClassic(const dvec3& kd, const dvec3& ks, double shininess, bool blinn, const dvec3& n, const dvec3& v,

@@ -61,11 +61,10 @@ struct Surface {
 
 /// f(l, v) (1/sr) for unit n, v, l, not multiplied by NoL. Zero when NoL <= 0.
 dvec3 evaluate(const Surface& surface, const dvec3& n, const dvec3& v, const dvec3& l);
-/// The two lobes of evaluate (their sum): (1 - F) × diffuse and F × D × V.
-struct Lobes {
-    dvec3 diffuse{0.0}, specular{0.0};
-};
-Lobes evaluateLobes(const Surface& surface, const dvec3& n, const dvec3& v, const dvec3& l);
+/// The two lobes of evaluate() apart (their sum is evaluate()): the diffuse one, (1 − F) ×
+/// diffuse colour × Fd, and the specular one, F D V (a blended "transparent" surface scales
+/// only the first by alpha).
+void evaluateLobes(const Surface& surface, const dvec3& n, const dvec3& v, const dvec3& l, dvec3& diffuse, dvec3& specular);
 
 /// The classic models of shaders/forward/classic_lighting.glsl for one light of unit
 /// illuminance, NoL included: kd NoL / π + ks (R·V)^n / π (Phong 1975), (N·H)^n with `blinn`

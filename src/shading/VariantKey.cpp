@@ -19,6 +19,8 @@ constexpr uint64_t kLightsAll = 1u << 14;
 constexpr uint64_t kIblImportance = 1u << 15;
 constexpr uint64_t kShadowDirectional = uint64_t(1) << 32, kShadowSpot = uint64_t(1) << 33, kShadowPoint = uint64_t(1) << 34;
 constexpr int kShadowFilterShift = 35, kShadowTapsShift = 37;
+// Material features above the first nine bits, and the transparency choices.
+constexpr uint64_t kBlendTransparent = uint64_t(1) << 39, kTransmission = uint64_t(1) << 40, kOit = uint64_t(1) << 41;
 constexpr int kDebugShift = 16, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
               kDiffuseShift = 30;
 constexpr uint64_t field(int shift, int bits) { return ((uint64_t(1) << bits) - 1) << shift; }
@@ -88,9 +90,13 @@ constexpr std::array kTable = {
     VariantDefine{SPECULA_MATERIAL_ALPHA_MASK, SPECULA_MATERIAL_ALPHA_MASK, "ALPHA_MASK", K::MaterialFeature},
     VariantDefine{SPECULA_MATERIAL_ALPHA_BLEND, SPECULA_MATERIAL_ALPHA_BLEND, "ALPHA_BLEND", K::MaterialFeature},
     VariantDefine{SPECULA_MATERIAL_USE_VERTEX_COLOR, SPECULA_MATERIAL_USE_VERTEX_COLOR, "VERTEX_COLOR", K::MaterialFeature},
+    VariantDefine{kBlendTransparent, kBlendTransparent, "BLEND_TRANSPARENT", K::MaterialFeature},
+    VariantDefine{kTransmission, kTransmission, "TRANSMISSION", K::MaterialFeature},
+    VariantDefine{kOit, kOit, "OIT", K::FrameFeature},
 };
 static_assert((kFeatureMask & (kIbl | kIblImportance | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
 static_assert(uint64_t(DebugView::LightCount) < (uint64_t(1) << 4)); // the debug field's 4 bits
+static_assert(((kShadowTapsMask | kShadowFilterMask) & (kBlendTransparent | kTransmission | kOit)) == 0);
 static_assert((kDiffuseMask & (kShadowDirectional | kShadowSpot | kShadowPoint | kShadowFilterMask | kShadowTapsMask)) == 0);
 
 } // namespace
@@ -107,14 +113,21 @@ bool isMaterialDebugView(DebugView view)
 
 ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& shading, DebugView debugView, IblVariant ibl,
                                     bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows,
-                                    bool allLights)
+                                    bool allLights, bool oit)
 {
     uint64_t key = features & kFeatureMask;
     key |= at(kModelShift, shading.model);
     if (shading.model == ShadingModel::Pbr) {
         key |= at(kDistributionShift, shading.distribution) | at(kGeometryShift, shading.geometry) |
                at(kFresnelShift, shading.fresnel) | at(kDiffuseShift, shading.diffuse);
+        // Only the physically based model has lobes to blend apart and a dielectric to refract
+        // through; a Doom frame's indices and the debug views have neither.
+        if (features & SPECULA_MATERIAL_BLEND_TRANSPARENT) key |= kBlendTransparent;
+        if ((features & SPECULA_MATERIAL_TRANSMISSION) && !doomIndexed && !isMaterialDebugView(debugView)) key |= kTransmission;
     }
+    // OIT's accumulation is for the blended list only (transmissive draws, blended or not, are
+    // drawn sorted before it), and never in an indexed frame.
+    if (oit && (features & SPECULA_MATERIAL_ALPHA_BLEND) && !(features & SPECULA_MATERIAL_TRANSMISSION) && !doomIndexed) key |= kOit;
     if (isMaterialDebugView(debugView)) key |= at(kDebugShift, debugView);
     if (ibl != IblVariant::None) key |= kIbl;
     if (ibl == IblVariant::Importance) key |= kIblImportance;

@@ -49,10 +49,10 @@ struct ForwardVariant {
     /// its key holds none and variants that differ only there share one program. `shadows`:
     /// the frame's shadow maps (SHADOWS and SHADOW_*: lights/shadow.glsl samples them).
     /// `allLights`: every light at every shading point, no cluster lists (LIGHTS_ALL, the
-    /// brute-force frame).
+    /// brute-force frame). `oit`: blended draws write weighted blended OIT's targets (OIT).
     static ForwardVariant make(uint32_t features, const ResolvedShading& shading, DebugView debugView, IblVariant ibl,
                                bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows = {},
-                               bool allLights = false);
+                               bool allLights = false, bool oit = false);
 
     ResolvedShading shading() const;
     /// The material or BRDF debug view the key selects, if any.

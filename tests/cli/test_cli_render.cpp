@@ -98,7 +98,8 @@ TEST(CliRender, ManyLightsStatsAndLightCountView)
     // Bad values are one clear line each.
     for (const auto& [flags, phrase] : {std::pair<std::string, std::string>{"--light-cutoff 1.5", "--light-cutoff must be"},
                                         {"--light-culling tiled", "--light-culling must be clustered or none"},
-                                        {"--lights -3", "--lights must be between"}}) {
+                                        {"--lights -3", "--lights must be between"},
+                                        {"--transparency peeled", "--transparency must be sorted or oit"}}) {
         const auto r = runCli("render many-lights --width 16 --height 16 " + flags + " -o " + dir + "/bad.png");
         EXPECT_NE(r.exitCode, 0) << flags;
         EXPECT_NE(r.err.find(phrase), std::string::npos) << r.err;

@@ -131,8 +131,9 @@ ReferenceSample referenceRadiance(const render::brdf::Surface& surface, const gl
     auto integrand = [&](const dvec3& l) -> dvec3 {
         const double NoL = glm::dot(n, l);
         if (NoL <= 0.0) return dvec3(0.0);
-        const brdf::Lobes lobes = brdf::evaluateLobes(surface, n, v, l);
-        const dvec3 f = lobes.diffuse + (mirror ? dvec3(0.0) : lobes.specular * specularCompensation);
+        dvec3 diffuse, specular;
+        brdf::evaluateLobes(surface, n, v, l, diffuse, specular);
+        const dvec3 f = diffuse + (mirror ? dvec3(0.0) : specular * specularCompensation);
         return f * NoL;
     };
     auto brdfPdf = [&](const dvec3& l) {

@@ -72,7 +72,9 @@ struct AlbedoTable {
                     const glm::dvec3 l = 2.0 * VoH * h - v;
                     if (l.z <= 0.0 || VoH <= 0.0) continue;
                     const double pdf = render::brdf::D_GGX(cosT, alpha) * cosT / (4.0 * VoH);
-                    sum += render::brdf::evaluateLobes(white, n, v, l).specular.x * l.z / pdf;
+                    glm::dvec3 diffuse, specular;
+                    render::brdf::evaluateLobes(white, n, v, l, diffuse, specular);
+                    sum += specular.x * l.z / pdf;
                 }
             e.push_back(sum / (kU * kPhi));
         }

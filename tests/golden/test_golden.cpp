@@ -21,6 +21,7 @@ using specula::test::runCli;
 namespace {
 
 const std::string kAssets = SPECULA_ASSETS_DIR;
+const std::string kScenes = std::string(SPECULA_SOURCE_DIR) + "/tests/assets"; // the repository's own
 
 struct Golden {
     std::string name;      ///< tests/golden/images/<name>.png
@@ -63,6 +64,11 @@ std::vector<Golden> goldens()
          0.002, "the sun's cascaded shadow maps on the model made to show them (its glTF camera and light), PCF"},
         {"ShadowsSpot", kAssets + "/models/ShadowsSpot/shadows-spot.gltf --env-color 0.1,0.1,0.1" + size, 0.5, 0.002,
          "a spot light's shadow map: the sphere's shadow inside the cone's lit disc, the cone's wedge"},
+        {"transmission", kScenes + "/transparency/transmission.json" + size, 0.5, 0.002,
+         "transparent surfaces (docs/transparency.md): a volume of amber glass (KHR_materials_volume), a "
+         "frosted thin pane, a refracting glass ball and a clear blended shell that keeps its highlight"},
+        {"transmission-oit", kScenes + "/transparency/transmission.json --transparency oit" + size, 0.5, 0.002,
+         "the same with weighted blended order-independent transparency for the blended shell"},
         {"doom", "doom" + size, 1.0, 0.01,
          "Doom's 8-bit frame: a colour that rounds differently picks a neighbouring palette entry, "
          "a jump of several levels, so more outliers are allowed than for smooth images"},

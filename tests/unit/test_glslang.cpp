@@ -57,6 +57,11 @@ std::vector<Variant> variants()
     out.push_back({"post/bloom_downsample.comp", {"FIRST_LEVEL"}});
     out.push_back({"post/bloom_downsample.comp", {"FIRST_LEVEL", "KARIS_AVERAGE"}});
     out.push_back({"forward/prepass.frag", {"ALPHA_MASK", "HAS_BASE_COLOR_TEXTURE", "VERTEX_COLOR"}});
+    // Transparency (render/passes/ForwardPass): the opaque frame's copy and OIT's composite.
+    out.push_back({"transparency/opaque_copy.frag", {"MULTISAMPLE", "ENVIRONMENT_BEHIND"}});
+    out.push_back({"transparency/opaque_copy.frag", {"ENVIRONMENT_BEHIND"}});
+    out.push_back({"transparency/oit_composite.frag", {"MULTISAMPLE"}});
+    out.push_back({"forward/pbr.frag", {"TRANSMISSION", "ALPHA_BLEND", "BLEND_TRANSPARENT", "OIT", "IBL", "ENERGY_COMPENSATION"}});
     // The DFG bake (render/ImageBasedLighting): each D, G and F define it is made with, alone
     // (the groups are independent dispatches) and one from every group together.
     for (const char* define : {"BRDF_D_BECKMANN", "BRDF_D_BLINN_PHONG", "BRDF_G_SCHLICK_GGX", "BRDF_G_SMITH_GGX_CORRELATED",

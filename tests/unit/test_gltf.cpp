@@ -1475,3 +1475,28 @@ TEST(GltfExtensions, UnlitMaterial)
     // The extension's colour is the base colour term alone: no emission.
     EXPECT_EQ(m.emissiveFactor, glm::vec3(0.0f));
 }
+
+// The transparency assets (tests/assets/transparency, written by
+// scripts/make-transparency-assets.py, accepted by the Khronos glTF validator): their
+// KHR_materials_transmission, _ior and _volume values, and a BLEND material's blend mode is
+// the glTF specification's (fade: alpha is coverage).
+TEST(GltfModels, TransmissionAndVolume)
+{
+    const fs::path assets = fs::path(SPECULA_SOURCE_DIR) / "tests/assets/transparency";
+    const Scene box = loadGltf(assets / "GlassBox.gltf");
+    ASSERT_EQ(box.materials.size(), 1u);
+    const Material& amber = box.materials[0];
+    EXPECT_FLOAT_EQ(amber.transmissionFactor, 1.0f);
+    EXPECT_FALSE(amber.ior); // 1.5, the default: F0 0.04 exactly
+    EXPECT_FLOAT_EQ(amber.thickness, 1.0f);
+    EXPECT_FLOAT_EQ(amber.attenuationDistance, 0.5f);
+    EXPECT_EQ(amber.attenuationColor, glm::vec3(0.9f, 0.6f, 0.3f));
+    EXPECT_TRUE(box.warnings.empty());
+    const Scene pane = loadGltf(assets / "FrostedPane.gltf");
+    ASSERT_EQ(pane.materials.size(), 1u);
+    EXPECT_FLOAT_EQ(pane.materials[0].transmissionFactor, 0.7f);
+    EXPECT_FLOAT_EQ(pane.materials[0].ior.value_or(0.0f), 1.33f);
+    EXPECT_FLOAT_EQ(pane.materials[0].thickness, 0.0f); // thin-walled
+    const Scene blend = loadGltf(kModels / "AlphaBlendModeTest/AlphaBlendModeTest.glb");
+    EXPECT_EQ(blend.materials[1].blendMode, BlendMode::Fade);
+}

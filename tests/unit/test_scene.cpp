@@ -135,7 +135,7 @@ TEST(Scene, DemoScenesHaveWhatTheyPromise)
     EXPECT_EQ(point, 3);
     EXPECT_EQ(spot, 1);
     EXPECT_EQ(directional, 1);
-    EXPECT_EQ(demo.meshInstances().size(), 26u); // 25 spheres and the floor
+    EXPECT_EQ(demo.meshInstances().size(), 27u); // 25 spheres, the glass sphere and the floor
     ASSERT_FALSE(demo.cameraInstances().empty());
 
     const Scene learn = makeLearnOpenGlScene();

@@ -100,3 +100,48 @@ TEST(SceneFileMaterials, RenderShadingIsTheFramesModel)
     const std::string error = test::sceneError(R"({"render": {"shading": "quake"}})");
     EXPECT_NE(error.find("render.shading"), std::string::npos) << error;
 }
+
+// Transparent surfaces (docs/transparency.md): blendMode on blended materials only, and the
+// transmission and volume keys of KHR_materials_transmission and KHR_materials_volume.
+TEST(SceneFileMaterials, BlendModeAndTransmission)
+{
+    const SceneDocument d = test::loadSceneText(R"({"shapes": [
+        {"type": "sphere", "material": {"baseColor": [1, 1, 1, 0.1], "alphaMode": "blend", "blendMode": "transparent"}},
+        {"type": "sphere", "material": {"alphaMode": "blend"}},
+        {"type": "sphere", "material": {"transmission": 0.9, "ior": 1.45, "thickness": 0.2, "attenuationDistance": 0.5,
+                                        "attenuationColor": [0.9, 0.8, 0.7]}}],
+        "render": {"transparency": "oit"}})");
+    ASSERT_EQ(d.scene.materials.size(), 3u);
+    EXPECT_EQ(d.scene.materials[0].blendMode, BlendMode::Transparent);
+    EXPECT_EQ(d.scene.materials[1].blendMode, BlendMode::Fade); // the glTF specification's behaviour
+    const Material& glass = d.scene.materials[2];
+    EXPECT_FLOAT_EQ(glass.transmissionFactor, 0.9f);
+    EXPECT_FLOAT_EQ(glass.thickness, 0.2f);
+    EXPECT_FLOAT_EQ(glass.attenuationDistance, 0.5f);
+    EXPECT_EQ(glass.attenuationColor, glm::vec3(0.9f, 0.8f, 0.7f));
+    EXPECT_FLOAT_EQ(glass.ior.value_or(0.0f), 1.45f);
+    EXPECT_EQ(d.render.transparency, "oit");
+
+    auto error = [](const std::string& material) {
+        return test::sceneError(R"({"shapes": [{"type": "sphere", "material": )" + material + "}]}");
+    };
+    EXPECT_NE(error(R"({"blendMode": "transparent"})").find("alphaMode \"blend\""), std::string::npos);
+    EXPECT_NE(error(R"({"alphaMode": "blend", "blendMode": "additive"})").find("blendMode"), std::string::npos);
+    EXPECT_NE(error(R"({"transmission": 1.5})").find("transmission"), std::string::npos);
+    EXPECT_NE(error(R"({"thickness": -1})").find("thickness"), std::string::npos);
+    EXPECT_NE(error(R"({"attenuationColor": [2, 1, 1]})").find("attenuationColor"), std::string::npos);
+    EXPECT_NE(test::sceneError(R"({"render": {"transparency": "depth-peeling"}})").find("transparency"), std::string::npos);
+}
+
+// The transmission golden's scene file (tests/assets/transparency/transmission.json) loads.
+TEST(SceneFileMaterials, TransmissionSceneLoads)
+{
+    const SceneDocument d = loadScene(fs::path(SPECULA_SOURCE_DIR) / "tests/assets/transparency/transmission.json");
+    int transmissive = 0, transparent = 0;
+    for (const Material& m : d.scene.materials) {
+        transmissive += m.transmissionFactor > 0.0f;
+        transparent += m.alphaMode == AlphaMode::Blend && m.blendMode == BlendMode::Transparent;
+    }
+    EXPECT_EQ(transmissive, 3);
+    EXPECT_EQ(transparent, 1);
+}

@@ -9,8 +9,10 @@
 #include "render/FrameContext.h"
 #include "render/GpuScene.h"
 #include "render/graph/GlGraphBackend.h"
+#include "gl/Debug.h"
 #include "render/passes/BillboardPass.h"
 #include "render/passes/DoomPass.h"
+#include "render/passes/Fullscreen.h"
 #include "render/passes/LightCullPass.h"
 #include "render/passes/ShadowPass.h"
 #include "shaders/shared/Bindings.h"
@@ -96,13 +98,53 @@ struct ForwardPass::Impl {
     ShadowVariant shadows;                       // this frame's SHADOWS variants
     bool allLights = false;                      // this frame's LIGHTS_ALL
 
+    // The transparent phase's programs and sampler (made on first use).
+    struct CopyProgram {
+        gl::Program program;
+        int samples = -1; // uSamples
+    };
+    std::map<std::string, CopyProgram> copyPrograms; // by variant: "", "MULTISAMPLE;", ...
+    std::map<bool, gl::Program> compositePrograms;   // by multisampling
+    // Trilinear, clamped: a refracted ray that leaves the screen sees the frame's edge.
+    gl::Sampler transmissionSampler{{.wrapS = gl::Wrap::ClampToEdge, .wrapT = gl::Wrap::ClampToEdge, .wrapR = gl::Wrap::ClampToEdge},
+                                    "opaque frame trilinear clamp"};
+
+    CopyProgram& copyProgram(bool multisample, bool environmentBehind)
+    {
+        std::vector<std::string> defines;
+        if (multisample) defines.push_back("MULTISAMPLE");
+        if (environmentBehind) defines.push_back("ENVIRONMENT_BEHIND");
+        std::string key;
+        for (const std::string& d : defines) key += d + ";";
+        CopyProgram& p = copyPrograms[key];
+        if (!p.program) {
+            p.program = gl::Program({.vertex = "post/fullscreen.vert", .fragment = "transparency/opaque_copy.frag",
+                                     .defines = defines, .label = "opaque frame copy " + key});
+            p.samples = p.program.uniformLocation("uSamples");
+        }
+        return p;
+    }
+
+    gl::Program& compositeProgram(bool multisample)
+    {
+        gl::Program& p = compositePrograms[multisample];
+        if (!p) p = gl::Program({.vertex = "post/fullscreen.vert", .fragment = "transparency/oit_composite.frag",
+                                 .defines = multisample ? std::vector<std::string>{"MULTISAMPLE"} : std::vector<std::string>{},
+                                 .label = multisample ? "oit composite MULTISAMPLE" : "oit composite"});
+        return p;
+    }
+
     ForwardProgram& program(const FrameContext& frame, uint32_t features)
     {
         const FrameSettings& s = frame.settings;
+        if (s.blendModeOverride && (features & SPECULA_MATERIAL_ALPHA_BLEND)) {
+            features &= ~uint32_t(SPECULA_MATERIAL_BLEND_TRANSPARENT);
+            if (*s.blendModeOverride == scene::BlendMode::Transparent) features |= SPECULA_MATERIAL_BLEND_TRANSPARENT;
+        }
         const ResolvedShading shading = resolveShading(s.materialOverride, s.brdfGeometry, features);
         const ForwardVariant variant =
             ForwardVariant::make(features, shading, s.debugView, iblVariant(frame), s.energyCompensation, s.ssao.enabled, isDoomFrame(s),
-                                 shadows, allLights);
+                                 shadows, allLights, s.transparency == Transparency::Oit);
         auto it = programs.find(variant.key);
         if (it != programs.end()) return it->second;
         ForwardProgram p;
@@ -155,6 +197,7 @@ FrameDrawLists ForwardPass::drawLists(const FrameContext& frame) const
     if (!scene) return lists;
     const glm::mat4 viewProjection = frame.view.projection * frame.view.view;
     lists.opaque = DrawList::build(*scene, frame.view.view, viewProjection, DrawFilter::Opaque, mImpl->materialPrograms);
+    lists.transmissive = DrawList::build(*scene, frame.view.view, viewProjection, DrawFilter::Transmissive, mImpl->materialPrograms);
     lists.blended = DrawList::build(*scene, frame.view.view, viewProjection, DrawFilter::Blended, mImpl->materialPrograms);
     return lists;
 }
@@ -165,6 +208,57 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
     Impl& r = *mImpl;
     const bool indexed = isDoomFrame(frame.settings);
     billboards.prepare(indexed);
+    // A Doom frame's indices can neither refract nor blend: its transmissive surfaces are drawn
+    // as opaque ones, its blended ones as cutouts (pbr.frag), all in the one pass.
+    const bool refract = !indexed && !lists.transmissive.empty();
+    const bool oit = !indexed && frame.settings.transparency == Transparency::Oit && !lists.blended.empty();
+    const bool split = refract || oit;
+    const bool environmentBehind = iblOn(frame);
+    const bool multisampled = frame.samples > 1;
+    if (refract) r.copyProgram(multisampled, environmentBehind);
+    if (oit) r.compositeProgram(multisampled);
+
+    // What every draw of the scene reads: frame and environment blocks, lights, shadows,
+    // clusters, occlusion, Doom's tables. Bound again by the second pass: nothing keeps them.
+    auto bindFrameResources = [&frame, doom, shadows, culling, targets] {
+        gl::State& state = frame.state();
+        FrameStores& stores = frame.stores;
+        if (targets.occlusion) {
+            state.bindTexture(SPECULA_UNIT_SSAO, frame.backend.texture(targets.occlusion));
+            state.bindSampler(SPECULA_UNIT_SSAO, nullptr);
+        }
+        stores.frame.bind(SPECULA_BINDING_FRAME);
+        if (stores.ibl.hasEnvironment()) {
+            state.bindTexture(SPECULA_UNIT_PREFILTERED, stores.ibl.prefiltered());
+            state.bindSampler(SPECULA_UNIT_PREFILTERED, nullptr);
+            state.bindTexture(SPECULA_UNIT_IRRADIANCE, stores.ibl.irradiance());
+            state.bindSampler(SPECULA_UNIT_IRRADIANCE, nullptr);
+            // The importance-sampled specular reads the unfiltered cube's box mips (ibl/importance.glsl).
+            state.bindTexture(SPECULA_UNIT_ENVIRONMENT_CUBE, stores.ibl.cube());
+            state.bindSampler(SPECULA_UNIT_ENVIRONMENT_CUBE, nullptr);
+            stores.environment.bind(SPECULA_BINDING_ENVIRONMENT);
+        }
+        stores.lights.bind(state);
+        if (targets.shadows && shadows) shadows->bind(state);
+        if (targets.clusters && culling) culling->bind(state);
+        // Doom materials look their colours up in the tables, inline or for the colour-map pass.
+        if (doom) doom->bindTables(state);
+    };
+    // A Doom frame's indices cannot be blended: blended materials are cut out there
+    // (pbr.frag), so they are drawn and depth-written as cutouts.
+    const SubmitOptions options{.blend = !indexed, .white = &frame.stores.white, .flatNormal = &frame.stores.flatNormal};
+
+    // The frame behind the transmissive surfaces: resolved, with every mip level.
+    GraphTexture opaqueFrame;
+    if (refract) {
+        GraphTextureDesc desc;
+        desc.width = frame.width;
+        desc.height = frame.height;
+        desc.format = gl::Format::RGBA16F;
+        desc.levels = gl::Texture::fullMipChain(frame.width, frame.height);
+        opaqueFrame = graph.createTexture("opaque frame", desc);
+    }
+
     graph.addPass(
         "forward",
         [&](FrameGraph::Builder& b) {
@@ -173,8 +267,10 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
             if (targets.clusters) b.read(targets.clusters, Use::Sample);
             b.write(targets.color, Use::ColorAttachment);
             b.write(targets.depth, Use::DepthAttachment);
+            if (opaqueFrame) b.write(opaqueFrame, Use::ColorAttachment);
         },
-        [&frame, &lists, &r, &billboards, doom, shadows, culling, targets, indexed] {
+        [&frame, &lists, &r, &billboards, targets, indexed, split, opaqueFrame, options, bindFrameResources, multisampled,
+         environmentBehind] {
             gl::State& state = frame.state();
             FrameStores& stores = frame.stores;
             const FrameSettings& settings = frame.settings;
@@ -190,44 +286,106 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
             }
             target.clearDepth(1.0f);
 
-            if (targets.occlusion) {
-                state.bindTexture(SPECULA_UNIT_SSAO, frame.backend.texture(targets.occlusion));
-                state.bindSampler(SPECULA_UNIT_SSAO, nullptr);
-            }
-            stores.frame.bind(SPECULA_BINDING_FRAME);
             const size_t environmentBytes = stores.environment.buffer().bytesUpdated();
             updateEnvironment(frame);
             frame.stats.environmentBytesUploaded = stores.environment.buffer().bytesUpdated() - environmentBytes;
-            if (stores.ibl.hasEnvironment()) {
-                state.bindTexture(SPECULA_UNIT_PREFILTERED, stores.ibl.prefiltered());
-                state.bindSampler(SPECULA_UNIT_PREFILTERED, nullptr);
-                state.bindTexture(SPECULA_UNIT_IRRADIANCE, stores.ibl.irradiance());
-                state.bindSampler(SPECULA_UNIT_IRRADIANCE, nullptr);
-                // The importance-sampled specular reads the unfiltered cube's box mips (ibl/importance.glsl).
-                state.bindTexture(SPECULA_UNIT_ENVIRONMENT_CUBE, stores.ibl.cube());
-                state.bindSampler(SPECULA_UNIT_ENVIRONMENT_CUBE, nullptr);
-                stores.environment.bind(SPECULA_BINDING_ENVIRONMENT);
-            }
-            stores.lights.bind(state);
-            if (targets.shadows && shadows) shadows->bind(state);
-            if (targets.clusters && culling) culling->bind(state);
-            // Doom materials look their colours up in the tables, inline or for the colour-map pass.
-            if (doom) doom->bindTables(state);
+            bindFrameResources();
             if (!stores.scene) return;
             const GpuScene& scene = *stores.scene;
-            // A Doom frame's indices cannot be blended: blended materials are cut out there
-            // (pbr.frag), so they are drawn and depth-written as cutouts.
-            const SubmitOptions options{.blend = !indexed, .white = &stores.white, .flatNormal = &stores.flatNormal};
             frame.stats.triangles += lists.opaque.submit(state, scene, r.materialPrograms, options);
+            // A Doom frame's transmissive surfaces are opaque ones there.
+            if (indexed) frame.stats.triangles += lists.transmissive.submit(state, scene, r.materialPrograms, options);
             // Cutout billboards belong to the opaque phase: depth-tested and written like surfaces.
             frame.stats.triangles += billboards.drawOpaque(state, frame.height, indexed);
             // The sky after the opaque surfaces (it fills only what they left) and before anything blended.
             r.skybox.draw(frame);
+            if (opaqueFrame) {
+                // The opaque frame for refraction: resolved into level 0, then its mip chain.
+                gl::DebugGroup group("opaque frame");
+                gl::Texture& copy = frame.backend.texture(opaqueFrame);
+                Impl::CopyProgram& program = r.copyProgram(multisampled, environmentBehind);
+                if (program.samples >= 0) program.program.set(program.samples, frame.samples);
+                state.bindTexture(SPECULA_UNIT_POST_INPUT_1, frame.backend.texture(targets.depth));
+                state.bindSampler(SPECULA_UNIT_POST_INPUT_1, nullptr);
+                drawFullscreen(state, {.target = &frame.backend.framebuffer({opaqueFrame}), .width = frame.width,
+                                       .height = frame.height, .program = &program.program,
+                                       .input = &frame.backend.texture(targets.color), .triangle = &stores.emptyVertexArray});
+                copy.generateMipmaps();
+            }
+            if (split) return; // the rest is the pass "transparent"
             frame.stats.triangles += lists.blended.submit(state, scene, r.materialPrograms, options);
             // Blended billboards after the blended surfaces (sorted apart from them), gizmos last.
             frame.stats.triangles += billboards.drawBlended(state, frame.view, frame.height,
                                                             settings.gizmos ? &stores.lights : nullptr,
                                                             settings.selectedLight, indexed);
+        });
+    if (!split) return;
+
+    // Weighted blended OIT's targets, as many samples as the frame's.
+    GraphTexture accumulation, revealage;
+    if (oit) {
+        GraphTextureDesc desc = graph.desc(targets.color);
+        // 32-bit floats: HDR radiance times weights up to 3 × 10³ overflows half floats.
+        desc.format = gl::Format::RGBA32F;
+        accumulation = graph.createTexture("oit accumulation", desc);
+        desc.format = gl::Format::R16F;
+        revealage = graph.createTexture("oit revealage", desc);
+    }
+    graph.addPass(
+        "transparent",
+        [&](FrameGraph::Builder& b) {
+            if (targets.occlusion) b.read(targets.occlusion, Use::Sample);
+            if (targets.shadows) b.read(targets.shadows, Use::Sample);
+            if (targets.clusters) b.read(targets.clusters, Use::Sample);
+            if (opaqueFrame) b.read(opaqueFrame, Use::Sample);
+            if (accumulation) {
+                b.write(accumulation, Use::ColorAttachment);
+                b.write(revealage, Use::ColorAttachment);
+            }
+            b.write(targets.color, Use::ColorAttachment);
+            b.write(targets.depth, Use::DepthAttachment);
+        },
+        [&frame, &lists, &r, &billboards, targets, opaqueFrame, accumulation, revealage, options, bindFrameResources, multisampled] {
+            gl::State& state = frame.state();
+            FrameStores& stores = frame.stores;
+            const FrameSettings& settings = frame.settings;
+            gl::Framebuffer& target = frame.backend.framebuffer({targets.color}, targets.depth);
+            state.bindFramebuffer(&target);
+            state.viewport(0, 0, frame.width, frame.height);
+            bindFrameResources();
+            if (!stores.scene) return;
+            const GpuScene& scene = *stores.scene;
+            if (opaqueFrame) {
+                state.bindTexture(SPECULA_UNIT_TRANSMISSION, frame.backend.texture(opaqueFrame));
+                state.bindSampler(SPECULA_UNIT_TRANSMISSION, &r.transmissionSampler);
+                frame.stats.triangles += lists.transmissive.submit(state, scene, r.materialPrograms, options);
+            }
+            if (accumulation) {
+                // Accumulate every blended layer in any order, depth-tested against the frame's
+                // depth and writing none; then one full-screen composite over the frame.
+                gl::Framebuffer& layers = frame.backend.framebuffer({accumulation, revealage}, targets.depth);
+                state.bindFramebuffer(&layers);
+                layers.clearColor(0, 0.0f, 0.0f, 0.0f, 0.0f);
+                layers.clearColor(1, 1.0f, 1.0f, 1.0f, 1.0f);
+                SubmitOptions accumulate = options;
+                accumulate.blendOutput = BlendOutput::WeightedOit;
+                frame.stats.triangles += lists.blended.submit(state, scene, r.materialPrograms, accumulate);
+                gl::DebugGroup group("oit composite");
+                state.bindTexture(SPECULA_UNIT_POST_INPUT_1, frame.backend.texture(revealage));
+                state.bindSampler(SPECULA_UNIT_POST_INPUT_1, nullptr);
+                drawFullscreen(state, {.target = &frame.backend.framebuffer({targets.color}), .width = frame.width,
+                                       .height = frame.height,
+                                       .pipeline = {.noDepthTest = true, .noDepthWrite = true, .blend = gl::BlendMode::PremultipliedAlpha},
+                                       .program = &r.compositeProgram(multisampled),
+                                       .input = &frame.backend.texture(accumulation), .triangle = &stores.emptyVertexArray});
+                state.bindFramebuffer(&target);
+            } else {
+                frame.stats.triangles += lists.blended.submit(state, scene, r.materialPrograms, options);
+            }
+            // Blended billboards after the blended surfaces (sorted apart from them), gizmos last.
+            frame.stats.triangles += billboards.drawBlended(state, frame.view, frame.height,
+                                                            settings.gizmos ? &stores.lights : nullptr,
+                                                            settings.selectedLight, false);
         });
 }
 

@@ -1,12 +1,18 @@
 #pragma once
 // The forward pass: the scene's surfaces lit by the punctual lights and the environment into
-// the frame's HDR target (or, in a Doom frame, palette indices and levels). Inside it, in order
+// the frame's HDR target (or, in a Doom frame, palette indices and levels). In order
 // (render/passes/BillboardPass.h gives the reasons):
 //   1. opaque and masked surfaces (the frame's opaque draw list)
 //   2. cutout and opaque billboards
 //   3. the skybox (render/passes/SkyboxPass)
-//   4. blended surfaces, back to front (the blended draw list)
-//   5. blended billboards, then the light gizmos
+//   4. transmissive surfaces, refracting the frame so far (docs/transparency.md)
+//   5. blended surfaces: back to front (the blended draw list), or with --transparency oit
+//      into weighted blended OIT's targets, then composited over the frame
+//   6. blended billboards, then the light gizmos
+// When the frame has transmissive surfaces or OIT, 1–3 are the pass "forward" and 4–6 the
+// pass "transparent", and "forward" ends by copying its frame into "opaque frame" (resolved,
+// with a mip chain, for rough refraction), which "transparent" reads. Otherwise all of it is
+// the one pass "forward", as before either existed.
 // It keeps the programs of every variant it has met (keyed by shading/VariantKey), and resolves
 // each material's program and DFG table once a frame (prepareMaterials) so that no compile or
 // bake lands inside the pass or a draw.
@@ -29,8 +35,9 @@ struct FrameContext;
 
 /// The frame's draw lists of its one view, built once and read by every pass that draws it.
 struct FrameDrawLists {
-    DrawList opaque;  ///< opaque and masked surfaces
-    DrawList blended; ///< blended surfaces, back to front
+    DrawList opaque;       ///< opaque and masked surfaces
+    DrawList transmissive; ///< surfaces with transmission, back to front
+    DrawList blended;      ///< blended surfaces, back to front
 };
 
 class ForwardPass {

@@ -429,7 +429,7 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
     // The casters' programs, by material.
     r.drawPrograms.clear();
     for (const MaterialBinding& m : scene->materials()) {
-        if (m.alphaMode == scene::AlphaMode::Blend) {
+        if (!castsShadow(m)) { // blended and mostly transmissive surfaces (GpuScene.h)
             r.drawPrograms.push_back({});
             continue;
         }

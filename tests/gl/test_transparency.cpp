@@ -1,0 +1,534 @@
+// Transparent surfaces (docs/transparency.md) against expectations worked out here, not by
+// the renderer: the BRDF's lobes on the CPU (shading/Brdf.h) for the blend modes, exact
+// Fresnel at normal incidence and Beer–Lambert for transmission, McGuire & Bavoil's weighted
+// mean for order-independent transparency, Porter–Duff "over" for sorted blending.
+#include "GlTestContext.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render/DrawList.h"
+#include "render/GpuScene.h"
+#include "render/Renderer.h"
+#include "scene/DemoScenes.h"
+#include "scene/Procedural.h"
+#include "shading/Brdf.h"
+
+using namespace specula;
+using specula::test::GlTest;
+using glm::dvec3;
+
+namespace {
+
+constexpr int kSize = 96;
+
+render::FrameSettings exactSettings()
+{
+    render::FrameSettings s;
+    s.width = s.height = kSize;
+    s.msaa = 1;
+    s.tonemap = render::Tonemap::None;
+    s.energyCompensation = false; // exactly the glTF BRDF, as shading/Brdf.cpp evaluates it
+    return s;
+}
+
+ImageFloat renderScene(const scene::Scene& s, const render::View& view, const render::FrameSettings& settings)
+{
+    render::Renderer renderer;
+    renderer.setScene(s);
+    renderer.render(view, settings);
+    return renderer.readRadiance();
+}
+
+dvec3 pixel(const ImageFloat& image, int x, int y)
+{
+    const float* p = &image.pixels[(size_t(y) * size_t(image.width) + size_t(x)) * 4];
+    return dvec3(p[0], p[1], p[2]);
+}
+
+/// The world-space ray through pixel (x, y)'s centre (row 0 at the top).
+struct Ray {
+    dvec3 origin, direction;
+};
+Ray pixelRay(const render::View& view, int x, int y, int width, int height)
+{
+    const glm::dmat4 inverse = glm::inverse(glm::dmat4(view.projection * view.view));
+    const double ndcX = (x + 0.5) / width * 2.0 - 1.0;
+    const double ndcY = 1.0 - (y + 0.5) / height * 2.0;
+    const glm::dvec4 nearPoint = inverse * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
+    const glm::dvec4 farPoint = inverse * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
+    const dvec3 origin = dvec3(nearPoint) / nearPoint.w;
+    return {origin, glm::normalize(dvec3(farPoint) / farPoint.w - origin)};
+}
+
+/// Where the ray meets the square of half side `half` (world units) centred at the origin of
+/// `frame`, a makePlane quad (in its local XZ plane, facing local +Y), or nothing.
+std::optional<dvec3> hitQuad(const Ray& ray, const glm::dmat4& frame, double half)
+{
+    const dvec3 center(frame[3]), right = glm::normalize(dvec3(frame[0])), up = glm::normalize(dvec3(frame[2])),
+                normal = glm::normalize(dvec3(frame[1]));
+    const double denominator = glm::dot(ray.direction, normal);
+    if (std::abs(denominator) < 1e-9) return std::nullopt;
+    const double t = glm::dot(center - ray.origin, normal) / denominator;
+    const dvec3 p = ray.origin + t * ray.direction;
+    if (t <= 0.0 || std::abs(glm::dot(p - center, right)) > half || std::abs(glm::dot(p - center, up)) > half) return std::nullopt;
+    return p;
+}
+
+/// A quad of half side `half` facing +Z under `transform` (makePlane faces +Y).
+glm::mat4 facingZ(const glm::mat4& transform)
+{
+    return transform * glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1, 0, 0));
+}
+
+/// An emissive backdrop: a quad of side 8 at z = -2 facing the camera, radiance `radiance`,
+/// times a checker texture when `checker` (so that a shifted image could not pass).
+void addBackdrop(scene::Scene& s, glm::vec3 radiance, bool checker, float z = -2.0f)
+{
+    scene::Material m;
+    m.name = "backdrop";
+    m.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f); // no diffuse: it shows its emission only
+    m.metallicFactor = 0.0f;
+    m.roughnessFactor = 1.0f;
+    m.emissiveFactor = radiance;
+    if (checker) {
+        scene::Image image;
+        image.name = "checker";
+        image.width = image.height = 16;
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x) {
+                const bool odd = ((x + y) & 1) != 0;
+                const uint8_t texel[4] = {uint8_t(odd ? 255 : 40), uint8_t(odd ? 90 : 200), uint8_t(odd ? 20 : 255), 255};
+                image.pixels.insert(image.pixels.end(), texel, texel + 4);
+            }
+        s.images.push_back(std::move(image));
+        scene::Sampler nearest;
+        nearest.magFilter = nearest.minFilter = scene::Filter::Nearest;
+        nearest.mipmaps = false;
+        s.samplers.push_back(nearest);
+        m.emissiveTexture.image = int(s.images.size() - 1);
+        m.emissiveTexture.sampler = int(s.samplers.size() - 1);
+    }
+    scene::addShape(s, scene::makePlane(8.0f), m, facingZ(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, z))), "backdrop");
+}
+
+render::View frontView(float distance = 4.0f)
+{
+    return render::lookAtView({0.0f, 0.0f, distance}, {0, 0, 0}, {0, 1, 0}, glm::radians(30.0f), 1.0f, 0.1f, 20.0f);
+}
+
+// -- blend modes -----------------------------------------------------------------------------
+
+struct BlendCase {
+    const char* name;
+    scene::AlphaMode alphaMode;
+    scene::BlendMode blendMode;
+    std::optional<scene::BlendMode> frameOverride;
+    double diffuseScale, specularScale; ///< what the blend mode must leave of each lobe
+};
+
+// Tolerance as in test_shading.cpp: 1.5% relative plus 2e-3 cd/m² absolute (half floats,
+// single precision, a faceted sphere's interpolated normals).
+constexpr double kRelative = 0.015;
+constexpr double kAbsolute = 2e-3;
+
+/// A sphere lit by one point light over a black background, each pixel against the CPU's
+/// lobes: diffuseScale × diffuse + specularScale × specular. Returns the peak pixel's
+/// specular (CPU) and the GPU's value there.
+struct Peak {
+    double cpuSpecular = 0.0, cpuDiffuse = 0.0, gpu = 0.0;
+};
+Peak renderBlendCase(const BlendCase& c, float alpha)
+{
+    scene::Scene s;
+    scene::Material material;
+    material.baseColorFactor = glm::vec4(0.8f, 0.3f, 0.2f, c.alphaMode == scene::AlphaMode::Blend ? alpha : 1.0f);
+    material.metallicFactor = 0.0f;
+    material.roughnessFactor = 0.3f;
+    material.alphaMode = c.alphaMode;
+    material.blendMode = c.blendMode;
+    scene::addShape(s, scene::makeUvSphere(1.0f, 256, 128), material, glm::mat4(1.0f), "sphere");
+    scene::Light light;
+    light.type = scene::Light::Type::Point;
+    light.intensity = 30.0f;
+    light.range = 8.0f;
+    const glm::vec3 lightPosition(2.0f, 2.5f, 3.0f);
+    scene::addLight(s, light, lightPosition, -lightPosition);
+    render::FrameSettings settings = exactSettings();
+    settings.blendModeOverride = c.frameOverride;
+    const render::View view = frontView();
+    const ImageFloat image = renderScene(s, view, settings);
+
+    render::brdf::Surface surface;
+    surface.baseColor = dvec3(0.8, 0.3, 0.2);
+    surface.metallic = 0.0;
+    surface.perceptualRoughness = 0.3;
+    Peak peak;
+    int tested = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const Ray ray = pixelRay(view, x, y, image.width, image.height);
+            const double b = glm::dot(ray.origin, ray.direction);
+            const double disc = b * b - (glm::dot(ray.origin, ray.origin) - 1.0);
+            if (disc <= 0.0) continue;
+            const dvec3 p = ray.origin + ray.direction * (-b - std::sqrt(disc));
+            const dvec3 n = glm::normalize(p), v = -ray.direction;
+            if (glm::dot(n, v) < 0.25) continue; // silhouettes straddle facets and background
+            const dvec3 toLight = dvec3(lightPosition) - p;
+            const double distance = glm::length(toLight);
+            const dvec3 l = toLight / distance;
+            const double NoL = glm::dot(n, l);
+            dvec3 diffuse(0.0), specular(0.0);
+            if (NoL > 0.0) {
+                render::brdf::evaluateLobes(surface, n, v, l, diffuse, specular);
+                const double e = light.intensity * render::brdf::rangeAttenuation(light.range, distance) * NoL;
+                diffuse *= e;
+                specular *= e;
+            }
+            // Premultiplied over black: the pixel is the blended surface's contribution.
+            const dvec3 want = diffuse * c.diffuseScale + specular * c.specularScale;
+            const dvec3 got = pixel(image, x, y);
+            ++tested;
+            for (int ch = 0; ch < 3; ++ch)
+                EXPECT_LE(std::abs(got[ch] - want[ch]), kRelative * want[ch] + kAbsolute)
+                    << c.name << " pixel (" << x << ", " << y << ") channel " << ch << ": GPU " << got[ch] << " CPU " << want[ch];
+            if (specular.g > peak.cpuSpecular) peak = {specular.g, diffuse.g, got.g};
+        }
+    EXPECT_GT(tested, 2000) << c.name;
+    return peak;
+}
+
+} // namespace
+
+// A clear sphere (alpha 0.1) over black: "transparent" keeps the specular peak of the opaque
+// sphere and scales only its diffuse light by alpha; "fade" (glTF's coverage) scales both.
+// The frame's override turns a fade material into a transparent one (the gallery's tiles).
+TEST_F(GlTest, TransparencyBlendModesKeepOrFadeTheHighlight)
+{
+    const float alpha = 0.1f;
+    using scene::AlphaMode, scene::BlendMode;
+    const Peak opaque = renderBlendCase({"opaque", AlphaMode::Opaque, BlendMode::Fade, std::nullopt, 1.0, 1.0}, alpha);
+    const Peak transparent = renderBlendCase({"transparent", AlphaMode::Blend, BlendMode::Transparent, std::nullopt, alpha, 1.0}, alpha);
+    const Peak fade = renderBlendCase({"fade", AlphaMode::Blend, BlendMode::Fade, std::nullopt, alpha, alpha}, alpha);
+    const Peak overridden =
+        renderBlendCase({"fade material, transparent frame", AlphaMode::Blend, BlendMode::Fade, BlendMode::Transparent, alpha, 1.0}, alpha);
+    // The peak is a highlight: its specular outshines its diffuse, so the checks below mean something.
+    ASSERT_GT(opaque.cpuSpecular, 3.0 * opaque.cpuDiffuse);
+    // What is left at the peak without the (CPU) diffuse part, scaled as each mode scales it:
+    // the opaque sphere's specular peak, whole for transparent, a tenth for fade.
+    const double opaqueSpecular = opaque.gpu - opaque.cpuDiffuse;
+    EXPECT_NEAR(opaqueSpecular, opaque.cpuSpecular, kRelative * opaque.cpuSpecular);
+    EXPECT_NEAR(transparent.gpu - alpha * transparent.cpuDiffuse, opaqueSpecular, kRelative * opaque.cpuSpecular)
+        << "the highlight is kept in full";
+    EXPECT_NEAR(overridden.gpu - alpha * overridden.cpuDiffuse, opaqueSpecular, kRelative * opaque.cpuSpecular);
+    EXPECT_NEAR(fade.gpu - alpha * fade.cpuDiffuse, alpha * opaqueSpecular, kRelative * opaque.cpuSpecular)
+        << "fade scales the highlight by alpha";
+}
+
+namespace {
+
+// Transmission tolerance: 1% relative plus 2e-3 absolute. Half floats round to 0.05%, the
+// opaque frame's copy and its sample add two more roundings, the refracted sample lands on
+// the texel centre to within 1e-4 of a texel; a wrong Fresnel factor (0.04) or a shift of
+// one texel of the checker (a full colour change) is far outside.
+constexpr double kTransmissionRelative = 0.01;
+
+double exactF0(double ior)
+{
+    return std::pow((ior - 1.0) / (ior + 1.0), 2.0);
+}
+
+scene::Material glass(float transmission, float ior, float thickness)
+{
+    scene::Material m;
+    m.name = "glass";
+    m.baseColorFactor = glm::vec4(1.0f);
+    m.metallicFactor = 0.0f;
+    m.roughnessFactor = 0.0f;
+    m.transmissionFactor = transmission;
+    m.ior = ior;
+    m.thickness = thickness;
+    return m;
+}
+
+} // namespace
+
+// A thin slab (no volume) of IOR 1.5 and transmission 0.8 over a checker: every pixel behind
+// it is the checker's own pixel (nothing shifts) × T (1 − F0), F0 = ((n − 1)/(n + 1))² = 0.04
+// (the view is within 8° of normal incidence, where Schlick's F differs from F0 by < 1e-8).
+// With one sample and with four (the copy resolves them).
+TEST_F(GlTest, TransparencyThinSlabTransmitsWithoutShift)
+{
+    for (int msaa : {1, 4}) {
+        scene::Scene reference;
+        addBackdrop(reference, glm::vec3(1.0f), true);
+        scene::Scene withSlab = reference;
+        const float T = 0.8f, ior = 1.5f;
+        const glm::mat4 slab = facingZ(glm::mat4(1.0f));
+        scene::addShape(withSlab, scene::makePlane(1.6f), glass(T, ior, 0.0f), slab, "slab");
+        render::FrameSettings settings = exactSettings();
+        settings.msaa = msaa;
+        const render::View view = frontView();
+        const ImageFloat behind = renderScene(reference, view, settings);
+        const ImageFloat through = renderScene(withSlab, view, settings);
+        const double factor = T * (1.0 - exactF0(ior));
+        int tested = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                // Pixels wholly inside the slab (0.78 of its 0.8 half side: clear of its edge's samples).
+                if (!hitQuad(pixelRay(view, x, y, kSize, kSize), glm::dmat4(slab), 0.78)) continue;
+                ++tested;
+                const dvec3 want = factor * pixel(behind, x, y), got = pixel(through, x, y);
+                for (int ch = 0; ch < 3; ++ch)
+                    ASSERT_LE(std::abs(got[ch] - want[ch]), kTransmissionRelative * want[ch] + kAbsolute)
+                        << "msaa " << msaa << " pixel (" << x << ", " << y << ") channel " << ch << ": " << got[ch]
+                        << ", expected " << want[ch] << " = " << factor << " x the checker behind";
+            }
+        EXPECT_GT(tested, 1000);
+    }
+}
+
+// A volume (KHR_materials_volume) of thickness t, attenuation distance d and colour c over a
+// uniform backdrop L transmits (1 − F0) c^(t/d) L (Beer–Lambert); scaled by 2, the object's
+// thickness doubles too: c^(2t/d).
+TEST_F(GlTest, TransparencyVolumeAttenuatesByBeerLambert)
+{
+    const double t = 0.5, d = 0.25;
+    const dvec3 c(0.9, 0.5, 0.2), L(4.0);
+    for (float scale : {1.0f, 2.0f}) {
+        scene::Scene s;
+        addBackdrop(s, glm::vec3(L), false);
+        scene::Material m = glass(1.0f, 1.5f, float(t));
+        m.attenuationDistance = float(d);
+        m.attenuationColor = glm::vec3(c);
+        const glm::mat4 slab = facingZ(glm::scale(glm::mat4(1.0f), glm::vec3(scale)));
+        scene::addShape(s, scene::makePlane(0.8f), m, slab, "volume");
+        const render::View view = frontView();
+        const ImageFloat image = renderScene(s, view, exactSettings());
+        const dvec3 want = (1.0 - exactF0(1.5)) * glm::pow(c, dvec3(scale * t / d)) * L;
+        int tested = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                if (!hitQuad(pixelRay(view, x, y, kSize, kSize), glm::dmat4(slab), 0.38 * scale)) continue;
+                ++tested;
+                const dvec3 got = pixel(image, x, y);
+                for (int ch = 0; ch < 3; ++ch)
+                    ASSERT_LE(std::abs(got[ch] - want[ch]), kTransmissionRelative * want[ch] + kAbsolute)
+                        << "scale " << scale << " pixel (" << x << ", " << y << ") channel " << ch << ": " << got[ch]
+                        << ", expected (1 - F0) c^(t/d) L = " << want[ch];
+            }
+        EXPECT_GT(tested, 300);
+    }
+}
+
+// A smooth sphere of IOR 1 (no interface: F0 = 0) bends nothing: it is invisible but for its
+// reflection, which is Schlick's F = (1 − n·v)^5 at grazing angles. Each pixel is
+// (1 − F) × the checker's own pixel; where F < 1% (n·v > 0.6) it is the checker's pixel.
+TEST_F(GlTest, TransparencySphereOfIorOneIsInvisible)
+{
+    scene::Scene reference;
+    addBackdrop(reference, glm::vec3(1.0f), true, -3.0f);
+    scene::Scene withSphere = reference;
+    scene::addShape(withSphere, scene::makeUvSphere(1.0f, 256, 128), glass(1.0f, 1.0f, 2.0f), glm::mat4(1.0f), "sphere");
+    const render::View view = frontView(5.0f);
+    const ImageFloat behind = renderScene(reference, view, exactSettings());
+    const ImageFloat through = renderScene(withSphere, view, exactSettings());
+    int tested = 0, invisible = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const Ray ray = pixelRay(view, x, y, kSize, kSize);
+            const double b = glm::dot(ray.origin, ray.direction);
+            const double disc = b * b - (glm::dot(ray.origin, ray.origin) - 1.0);
+            if (disc <= 0.0) continue;
+            const dvec3 p = ray.origin + ray.direction * (-b - std::sqrt(disc));
+            const double NoV = glm::dot(glm::normalize(p), -ray.direction);
+            if (NoV < 0.3) continue; // silhouettes straddle facets and background
+            ++tested;
+            const double F = std::pow(1.0 - NoV, 5.0);
+            const dvec3 ref = pixel(behind, x, y), got = pixel(through, x, y);
+            for (int ch = 0; ch < 3; ++ch) {
+                const double want = (1.0 - F) * ref[ch];
+                ASSERT_LE(std::abs(got[ch] - want), 0.02 * want + kAbsolute)
+                    << "pixel (" << x << ", " << y << ") n.v " << NoV << " channel " << ch << ": " << got[ch] << ", expected " << want;
+                if (NoV > 0.6) {
+                    ASSERT_LE(std::abs(got[ch] - ref[ch]), 0.015 * ref[ch] + kAbsolute) << "visible at n.v " << NoV;
+                }
+            }
+            if (NoV > 0.6) ++invisible;
+        }
+    EXPECT_GT(tested, 1500);
+    EXPECT_GT(invisible, 1000);
+}
+
+namespace {
+
+// Two blended quads crossing each other along the Y axis, ±35° about it: on one side of the
+// axis the first is in front, on the other the second. Their bounds share a centre, so the
+// sorted list draws them in scene order whatever it is.
+struct Layer {
+    glm::dmat4 frame;
+    dvec3 color;
+    double alpha;
+};
+
+std::vector<Layer> crossedQuads()
+{
+    auto at = [](float degrees) { return glm::dmat4(facingZ(glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::vec3(0, 1, 0)))); };
+    return {{at(35.0f), {1.0, 0.15, 0.1}, 0.6}, {at(-35.0f), {0.1, 0.3, 1.0}, 0.5}};
+}
+
+scene::Scene crossedQuadScene(bool reversed)
+{
+    scene::Scene s;
+    std::vector<Layer> layers = crossedQuads();
+    if (reversed) std::swap(layers[0], layers[1]);
+    for (const Layer& layer : layers) {
+        scene::Material m;
+        m.name = "layer";
+        m.baseColorFactor = glm::vec4(glm::vec3(layer.color), float(layer.alpha));
+        m.alphaMode = scene::AlphaMode::Blend;
+        m.doubleSided = true;
+        m.shading.model = scene::ShadingModel::Unlit; // its colour exactly, no light needed
+        scene::addShape(s, scene::makePlane(2.0f), m, glm::mat4(layer.frame), "layer");
+    }
+    return s;
+}
+
+const glm::dvec3 kBackground(0.2, 0.25, 0.3);
+
+/// McGuire & Bavoil 2013, eq. 7: the weight of a layer at view depth z.
+double oitWeight(double z, double alpha)
+{
+    const double d = std::abs(z);
+    return alpha * std::clamp(10.0 / (1e-5 + std::pow(d / 5.0, 2.0) + std::pow(d / 200.0, 6.0)), 1e-2, 3e3);
+}
+
+} // namespace
+
+// Weighted blended OIT: the crossed quads give the same image in either scene order (within
+// 0.1%: only the order of float additions differs), every pixel the paper's weighted mean
+// over the background (1%), with one sample and with four. Sorted blending differs between
+// the orders exactly where the quads overlap, each order matching "over" in its draw order.
+TEST_F(GlTest, TransparencyOitIsOrderIndependent)
+{
+    const render::View view = frontView(5.0f);
+    render::FrameSettings settings = exactSettings();
+    settings.background = glm::vec3(kBackground);
+    auto shot = [&](bool reversed, render::Transparency transparency, int msaa) {
+        render::FrameSettings s = settings;
+        s.transparency = transparency;
+        s.msaa = msaa;
+        return renderScene(crossedQuadScene(reversed), view, s);
+    };
+    const ImageFloat oitForward = shot(false, render::Transparency::Oit, 1);
+    const ImageFloat oitReversed = shot(true, render::Transparency::Oit, 1);
+    const ImageFloat oitMsaa = shot(true, render::Transparency::Oit, 4);
+    const ImageFloat sortedForward = shot(false, render::Transparency::Sorted, 1);
+    const ImageFloat sortedReversed = shot(true, render::Transparency::Sorted, 1);
+
+    const std::vector<Layer> layers = crossedQuads();
+    int overlap = 0, single = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const Ray ray = pixelRay(view, x, y, kSize, kSize);
+            // Layers hit, clear of the quads' edges and of their crossing (where depth ties).
+            std::vector<std::pair<const Layer*, dvec3>> hits;
+            bool nearEdge = false;
+            for (const Layer& layer : layers) {
+                if (const auto p = hitQuad(ray, layer.frame, 1.0)) {
+                    if (!hitQuad(ray, layer.frame, 0.97)) nearEdge = true;
+                    hits.push_back({&layer, *p});
+                } else if (hitQuad(ray, layer.frame, 1.03)) {
+                    nearEdge = true;
+                }
+            }
+            if (nearEdge || (hits.size() == 2 && std::abs(hits[0].second.z - hits[1].second.z) < 0.05)) continue;
+            // The weighted mean: Σ C_i a_i w_i / Σ a_i w_i, C_i premultiplied, over the background.
+            dvec3 sum(0.0);
+            double weights = 0.0, revealage = 1.0;
+            for (const auto& [layer, p] : hits) {
+                const double z = p.z - 5.0; // view space: the camera at z = 5 looks down -z
+                const double w = oitWeight(z, layer->alpha);
+                sum += layer->color * layer->alpha * w;
+                weights += layer->alpha * w;
+                revealage *= 1.0 - layer->alpha;
+            }
+            const dvec3 want = hits.empty() ? kBackground : sum / weights * (1.0 - revealage) + kBackground * revealage;
+            const dvec3 a = pixel(oitForward, x, y), b = pixel(oitReversed, x, y), m = pixel(oitMsaa, x, y);
+            for (int ch = 0; ch < 3; ++ch) {
+                ASSERT_LE(std::abs(a[ch] - b[ch]), 1e-3 * std::max(a[ch], 1.0)) << "OIT depends on the order at (" << x << ", " << y << ")";
+                ASSERT_LE(std::abs(a[ch] - want[ch]), 0.01 * want[ch] + kAbsolute)
+                    << "OIT at (" << x << ", " << y << ") channel " << ch << ": " << a[ch] << ", weighted mean " << want[ch];
+                ASSERT_LE(std::abs(m[ch] - want[ch]), 0.01 * want[ch] + kAbsolute) << "OIT with 4 samples at (" << x << ", " << y << ")";
+            }
+            // Sorted: "over" in draw order (scene order; the second drawn on top).
+            auto over = [&](bool reversed) {
+                dvec3 c = kBackground;
+                for (int i = 0; i < 2; ++i) {
+                    const Layer& layer = layers[size_t(reversed ? 1 - i : i)];
+                    for (const auto& hit : hits)
+                        if (hit.first == &layer) c = layer.color * layer.alpha + c * (1.0 - layer.alpha);
+                }
+                return c;
+            };
+            const dvec3 sf = pixel(sortedForward, x, y), sr = pixel(sortedReversed, x, y);
+            const dvec3 wantForward = over(false), wantReversed = over(true);
+            for (int ch = 0; ch < 3; ++ch) {
+                ASSERT_LE(std::abs(sf[ch] - wantForward[ch]), 0.01 * wantForward[ch] + kAbsolute) << "sorted at (" << x << ", " << y << ")";
+                ASSERT_LE(std::abs(sr[ch] - wantReversed[ch]), 0.01 * wantReversed[ch] + kAbsolute) << "sorted at (" << x << ", " << y << ")";
+            }
+            if (hits.size() == 2) {
+                ++overlap;
+                EXPECT_GT(glm::length(sf - sr), 0.05) << "sorted blending must depend on the order where the quads overlap";
+            } else if (hits.size() == 1) {
+                ++single;
+            }
+        }
+    EXPECT_GT(overlap, 300);
+    EXPECT_GT(single, 300);
+}
+
+// The shadow rule (render/GpuScene.h): opaque surfaces and those that let less than half the
+// light through cast; blended ones and those of transmission 0.5 and above do not.
+TEST_F(GlTest, TransparencyShadowCastersFollowTheRule)
+{
+    scene::Scene s;
+    struct Kind {
+        const char* name;
+        scene::AlphaMode alphaMode;
+        float transmission;
+        bool casts;
+    } kinds[] = {{"opaque", scene::AlphaMode::Opaque, 0.0f, true},
+                 {"blended", scene::AlphaMode::Blend, 0.0f, false},
+                 {"tinted glass", scene::AlphaMode::Opaque, 0.3f, true},
+                 {"clear glass", scene::AlphaMode::Opaque, 0.5f, false},
+                 {"blended glass", scene::AlphaMode::Blend, 0.2f, false}};
+    for (const Kind& k : kinds) {
+        scene::Material m;
+        m.name = k.name;
+        m.alphaMode = k.alphaMode;
+        m.transmissionFactor = k.transmission;
+        scene::addShape(s, scene::makeCube(0.5f), m, glm::mat4(1.0f), k.name);
+    }
+    const render::GpuScene gpu(s);
+    const glm::mat4 view = glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0), glm::vec3(0, 1, 0));
+    const glm::mat4 viewProjection = glm::perspective(glm::radians(40.0f), 1.0f, 0.1f, 20.0f) * view;
+    std::vector<render::DrawProgram> programs(size_t(gpu.materialCount()));
+    const render::DrawList casters = render::DrawList::build(gpu, view, viewProjection, render::DrawFilter::ShadowCasters, programs);
+    std::vector<int> casting;
+    for (const render::DrawCommand& c : casters.commands()) casting.push_back(c.material);
+    std::sort(casting.begin(), casting.end());
+    std::vector<int> expected;
+    for (size_t i = 0; i < std::size(kinds); ++i)
+        if (kinds[i].casts) expected.push_back(int(i));
+    EXPECT_EQ(casting, expected);
+    // Transmissive draws have their own list (drawn after the opaque frame is copied), blended or not.
+    const render::DrawList transmissive = render::DrawList::build(gpu, view, viewProjection, render::DrawFilter::Transmissive, programs);
+    EXPECT_EQ(transmissive.commands().size(), 3u);
+    const render::DrawList opaque = render::DrawList::build(gpu, view, viewProjection, render::DrawFilter::Opaque, programs);
+    EXPECT_EQ(opaque.commands().size(), 1u);
+}
