@@ -158,7 +158,6 @@ render::FrameSettings resolveSettings(const scene::SceneDocument& document, cons
         throw Error("--env-intensity must be a finite number, not negative");
     if (!std::isfinite(s.environment.rotationDegrees)) throw Error("--env-rotation must be a finite number");
     if (!std::isfinite(s.exposureEv)) throw Error("--exposure must be a finite number");
-    s.environment.specular = options.iblDefault;
     if (const std::optional<std::string>& ibl = options.ibl ? options.ibl : document.environment.ibl) {
         const auto mode = render::parseIblSpecular(*ibl);
         if (!mode) throw Error("--ibl must be split-sum or importance (got '{}')", *ibl);

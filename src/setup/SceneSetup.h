@@ -34,9 +34,6 @@ struct FrameOptions {
     std::optional<std::string> skybox;
     std::optional<std::string> envSun; ///< extract | keep (--env-sun), over the scene file's
     std::optional<std::string> ibl; ///< split-sum | importance (--ibl), over the scene file's
-    /// The app's own default where neither says: importance for one offline frame (render),
-    /// the split sum for interactive frames (docs/ibl.md has the measurements).
-    render::IblSpecular iblDefault = render::IblSpecular::SplitSum;
     std::string bakePreset = "default";
     bool noCache = false;
     std::optional<std::string> energyCompensation; ///< on (default) | off

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "ImageProbe.h"
 #include "core/ImageIO.h"
 #include "render/Renderer.h"
 #include "scene/Procedural.h"
@@ -84,12 +85,5 @@ inline bool sphereNormal(int x, int y, glm::vec3& n)
     n = {px, py, std::sqrt(1.0f - r2)};
     return true;
 }
-
-inline glm::vec3 pixel(const ImageFloat& image, int x, int y)
-{
-    const size_t i = (size_t(y) * size_t(image.width) + size_t(x)) * 4;
-    return {image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]};
-}
-
 
 } // namespace specula::test

@@ -5,6 +5,7 @@
 // by their sector; every pixel of a Doom frame of the demo level and of a scene full of
 // billboards is a palette colour.
 #include "GlTestContext.h"
+#include "ImageProbe.h"
 
 #include <cmath>
 #include <set>
@@ -38,9 +39,7 @@ render::View testView()
 /// Pixel (x, y), image row 0 at the top, of a point in world space.
 glm::ivec2 project(const render::View& view, const glm::vec3& p)
 {
-    const glm::vec4 clip = view.projection * view.view * glm::vec4(p, 1.0f);
-    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-    return {int(std::floor((ndc.x * 0.5f + 0.5f) * kSize)), int(std::floor((0.5f - ndc.y * 0.5f) * kSize))};
+    return test::projectToPixel(view, p, kSize, kSize);
 }
 
 doom::Rgb pixel(const ImageRGBA8& image, glm::ivec2 p)

@@ -3,6 +3,7 @@
 // Phong between them; flat shading uses the face normal; switching one material's model or a
 // parameter at run time changes the next frame for that material only.
 #include "GlTestContext.h"
+#include "ImageProbe.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +21,7 @@
 
 using namespace specula;
 using specula::test::GlTest;
+using specula::test::pixel;
 using glm::dvec3;
 
 namespace {
@@ -64,15 +66,7 @@ void addTestLight(scene::Scene& s)
 /// Pixel (x, y), image row 0 at the top, of a point in world space.
 glm::ivec2 project(const render::View& view, const glm::vec3& p)
 {
-    const glm::vec4 clip = view.projection * view.view * glm::vec4(p, 1.0f);
-    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-    return {int(std::floor((ndc.x * 0.5f + 0.5f) * kSize)), int(std::floor((0.5f - ndc.y * 0.5f) * kSize))};
-}
-
-glm::vec3 pixel(const ImageFloat& image, glm::ivec2 p)
-{
-    const float* v = &image.pixels[(size_t(p.y) * size_t(image.width) + size_t(p.x)) * 4];
-    return {v[0], v[1], v[2]};
+    return test::projectToPixel(view, p, kSize, kSize);
 }
 
 ImageFloat renderSphere(scene::ShadingModel model, const scene::Primitive& sphere)

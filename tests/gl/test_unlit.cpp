@@ -4,6 +4,7 @@
 // frame's --shading override still wins. The lit quad beside it, with the same factors, is the
 // control: it must change where the unlit one must not.
 #include "GlTestContext.h"
+#include "ImageProbe.h"
 
 #include <cmath>
 
@@ -14,6 +15,7 @@
 
 using namespace specula;
 using specula::test::GlTest;
+using specula::test::pixel;
 
 namespace {
 
@@ -27,15 +29,7 @@ render::View quadsView()
 
 glm::ivec2 project(const render::View& view, const glm::vec3& p)
 {
-    const glm::vec4 clip = view.projection * view.view * glm::vec4(p, 1.0f);
-    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-    return {int(std::floor((ndc.x * 0.5f + 0.5f) * kSize)), int(std::floor((0.5f - ndc.y * 0.5f) * kSize))};
-}
-
-glm::vec3 pixel(const ImageFloat& image, glm::ivec2 p)
-{
-    const float* v = &image.pixels[(size_t(p.y) * size_t(image.width) + size_t(p.x)) * 4];
-    return {v[0], v[1], v[2]};
+    return test::projectToPixel(view, p, kSize, kSize);
 }
 
 /// Points on each quad's diagonal from its corner (x0, -0.5) to (x0 + 1, 0.5), where both of its

@@ -218,6 +218,12 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
     if (refract) r.copyProgram(multisampled, environmentBehind);
     if (oit) r.compositeProgram(multisampled);
 
+    // The graph's side of what both passes' draws sample.
+    auto readFrameResources = [&targets](FrameGraph::Builder& b) {
+        if (targets.occlusion) b.read(targets.occlusion, Use::Sample);
+        if (targets.shadows) b.read(targets.shadows, Use::Sample);
+        if (targets.clusters) b.read(targets.clusters, Use::Sample);
+    };
     // What every draw of the scene reads: frame and environment blocks, lights, shadows,
     // clusters, occlusion, Doom's tables. Bound again by the second pass: nothing keeps them.
     auto bindFrameResources = [&frame, doom, shadows, culling, targets] {
@@ -262,9 +268,7 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
     graph.addPass(
         "forward",
         [&](FrameGraph::Builder& b) {
-            if (targets.occlusion) b.read(targets.occlusion, Use::Sample);
-            if (targets.shadows) b.read(targets.shadows, Use::Sample);
-            if (targets.clusters) b.read(targets.clusters, Use::Sample);
+            readFrameResources(b);
             b.write(targets.color, Use::ColorAttachment);
             b.write(targets.depth, Use::DepthAttachment);
             if (opaqueFrame) b.write(opaqueFrame, Use::ColorAttachment);
@@ -334,9 +338,7 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
     graph.addPass(
         "transparent",
         [&](FrameGraph::Builder& b) {
-            if (targets.occlusion) b.read(targets.occlusion, Use::Sample);
-            if (targets.shadows) b.read(targets.shadows, Use::Sample);
-            if (targets.clusters) b.read(targets.clusters, Use::Sample);
+            readFrameResources(b);
             if (opaqueFrame) b.read(opaqueFrame, Use::Sample);
             if (accumulation) {
                 b.write(accumulation, Use::ColorAttachment);
