@@ -287,6 +287,9 @@ Scene makeLearnOpenGlScene(float sphereZ, const char* name)
         light.type = Light::Type::Point;
         light.color = glm::vec3(1.0f);
         light.intensity = 300.0f; // the tutorial's colour (300, 300, 300) with 1/d^2 falloff
+        // The tutorial's lights cast no shadows; its scene here is the same frame, so that
+        // side-by-side timings compare equal work (docs/performance.md).
+        light.castShadows = false;
         addLight(scene, light, p, {0, 0, -1});
         Material lamp;
         lamp.baseColorFactor = glm::vec4(1.0f);
