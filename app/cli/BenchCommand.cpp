@@ -52,6 +52,7 @@ nlohmann::json toJson(const Summary& s)
 int runBench(const BenchArgs& args)
 {
     if (args.frames < 1) throw Error("--frames must be at least 1");
+    if (args.frame.allCameras) throw Error("--camera all is for render (one image per camera); bench times one view: give an index");
     nlohmann::json results = nlohmann::json::array();
     std::string rendererName;
     std::vector<std::pair<std::string, std::vector<PassSummary>>> passTables;
@@ -147,9 +148,10 @@ int runBench(const BenchArgs& args)
         const render::FrameStats::Clusters clusters = renderer.stats().clusters;
         nlohmann::json passWallJson;
         for (const PassSummary& pass : passMedians) passWallJson[pass.name] = pass.wallMs;
-        passTables.emplace_back(fmt::format("{} ({}x{}x{}, {} light{}): time per pass, median of {} frames:", name, settings.width,
-                                            settings.height, settings.msaa, renderer.lightCount(), renderer.lightCount() == 1 ? "" : "s",
-                                            args.frames),
+        passTables.emplace_back(fmt::format("{} ({}x{}x{}, {} light{}, {} of {} triangles drawn): time per pass, median of {} frames:",
+                                            name, settings.width, settings.height, settings.msaa, renderer.lightCount(),
+                                            renderer.lightCount() == 1 ? "" : "s", renderer.stats().triangles,
+                                            document.scene.triangleCount(), args.frames),
                                 passMedians);
         clusterLines.push_back(clusterStatsLine(clusters));
         const Summary cpuSummary = summarize(cpu), gpuSummary = summarize(gpu);
@@ -160,6 +162,7 @@ int runBench(const BenchArgs& args)
                            {"height", settings.height},
                            {"msaa", settings.msaa},
                            {"triangles", document.scene.triangleCount()},
+                           {"trianglesDrawn", renderer.stats().triangles},
                            {"drawCalls", renderer.stats().drawCalls},
                            {"startupMs", startupMs},
                            {"environment", hasEnvironment},

@@ -41,7 +41,26 @@ void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
     command->add_option("--shading", frame.shading, "every material's shading model: pbr, unlit, flat, gouraud, phong, blinn-phong, doom");
     command->add_option("--debug-view", frame.debugView,
                         "show one buffer: base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, brdf-f, ssao, bloom, cascades, shadow-atlas, light-count");
-    command->add_option("--camera", frame.camera, "index of the scene camera to use (default: the first, else framed)");
+    command
+        ->add_option_function<std::string>(
+            "--camera",
+            [&frame](const std::string& value) {
+                if (value == "all") {
+                    frame.allCameras = true;
+                    return;
+                }
+                size_t used = 0;
+                int index = -1;
+                try {
+                    index = std::stoi(value, &used);
+                } catch (const std::exception&) {
+                    used = 0;
+                }
+                if (used != value.size() || index < 0) throw CLI::ValidationError("--camera", "must be a camera index or all (got '" + value + "')");
+                frame.camera = index;
+            },
+            "index of the scene camera to use (default: the first, else framed); render: all = one image per camera")
+        ->type_name("INDEX|all");
     command->add_flag("--no-default-lights", frame.noDefaultLights, "never add the default light rig");
     command->add_option("--env", frame.env, "environment: an equirectangular .hdr or .exr, sky (procedural, the default) or none");
     command->add_option("--env-color", frame.envColor, "a constant environment of radiance R,G,B (cd/m²)");
@@ -62,6 +81,8 @@ void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
                         "clustered (default: each pixel evaluates its cluster's lights) or none (every light everywhere)");
     command->add_option("--light-cutoff", frame.lightCutoff,
                         "lights without a range end where their illuminance falls to this fraction of it at 1 m (default 1e-4: 100 m; 0 = infinite)");
+    command->add_option("--lod-error", frame.lodPixels,
+                        "levels of detail: the largest on-screen error a coarser mesh may make, in pixels (default 0: full detail; docs/performance.md)");
     command->add_option("--transparency", frame.transparency,
                         "order of blended surfaces: sorted (default: back to front per draw) or oit (weighted blended, no order)");
     command->add_option("--lights", frame.lights, "the many-lights scene's number of point lights (default 1024)");
@@ -84,7 +105,7 @@ void rejectNonFinite(CLI::App& app)
                 if (end == begin || *end != '\0' || std::isfinite(number)) return {};
                 return "'" + value + "' is not a finite number";
             },
-            "FINITE");
+            /*description (none in --help)*/ "", "finite");
     }
     for (CLI::App* sub : app.get_subcommands({})) rejectNonFinite(*sub);
 }
@@ -101,8 +122,12 @@ CommandLine::CommandLine()
     });
 
     renderCommand = app.add_subcommand("render", "render a scene to an image (PNG, Radiance HDR or OpenEXR)");
-    renderCommand->add_option("scene", render.scene, "a .gltf, .glb or .json scene, or a built-in: demo (default), learnopengl, learnopengl-ibl");
-    renderCommand->add_option("-o,--output", render.output, "output image: .png (tone-mapped sRGB), .hdr or .exr (linear radiance x 2^EV)");
+    renderCommand->add_option("scene", render.scenes,
+                              "one or more .gltf, .glb or .json scenes, or built-ins: demo (default), learnopengl, learnopengl-ibl; "
+                              "several are rendered in one process, paying start-up once");
+    renderCommand->add_option("-o,--output", render.output,
+                              "output image: .png (tone-mapped sRGB), .hdr or .exr (linear radiance x 2^EV); for several images "
+                              "a pattern with {scene} (the file's stem or the built-in's name) and {camera} (its index), e.g. out/{scene}-{camera}.png");
     addFrameOptions(renderCommand, render.frame);
     renderCommand->add_option("--print-graph", render.printGraph,
                               "write the frame's graph of passes and resources as Graphviz dot to FILE (- = standard output)");

@@ -6,7 +6,9 @@
 namespace specula::cli {
 
 struct RenderArgs {
-    std::string scene;
+    /// One image per scene (and per camera with --camera all); none: the demo. With more than
+    /// one image, `output` names them with {scene} and {camera} (docs/specula.1).
+    std::vector<std::string> scenes;
     std::string output = "out.png";
     setup::FrameOptions frame;
     bool stats = false; ///< print the GPU time of each pass (median of kStatsFrames more frames)

@@ -34,6 +34,7 @@ const char* modelCaption(scene::ShadingModel model)
 int runGallery(const GalleryArgs& args)
 {
     const std::filesystem::path output = args.output;
+    if (args.frame.allCameras) throw Error("--camera all is for render (one image per camera); gallery shows one view: give an index");
     checkOutputPath(output);
     scene::SceneDocument document = setup::loadSceneOrBuiltin(args.scene, args.frame.load, args.frame.lights);
     setup::FrameOptions options = args.frame;

@@ -53,6 +53,7 @@ public:
 
 int runView(const ViewArgs& args)
 {
+    if (args.frame.allCameras) throw Error("--camera all is for render (one image per camera); the viewer switches cameras in its Scene panel");
     if (!args.screenshot.empty()) {
         if (args.frames < 1 && args.script.empty()) throw Error("--screenshot needs --frames N (or a script)");
         checkOutputPath(args.screenshot);

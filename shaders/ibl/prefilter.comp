@@ -18,13 +18,23 @@ uniform float uPerceptualRoughness;
 uniform uint uSamples;
 uniform float uSourceSize;   // base level size of uSource
 uniform float uSourceLevels; // mip count of uSource
+// Every uStride-th texel of a level of uLevelSize² faces, into a target of (uLevelSize /
+// uStride)² (a converged reference of a few texels: tests/gl/test_ibl.cpp); 0: the target's
+// own texels (the bake).
+uniform int uStride;
+uniform int uLevelSize;
 
 void main()
 {
     ivec3 id = ivec3(gl_GlobalInvocationID);
     int size = imageSize(uTarget).x;
     if (id.x >= size || id.y >= size) return;
-    vec3 n = cubeDirection(uint(id.z), (vec2(id.xy) + 0.5) / float(size));
+    vec2 texel = vec2(id.xy);
+    if (uStride > 0) {
+        texel = texel * float(uStride) + float(uStride / 2);
+        size = uLevelSize;
+    }
+    vec3 n = cubeDirection(uint(id.z), (texel + 0.5) / float(size));
 
     if (uPerceptualRoughness <= 0.0) {
         // A mirror: the source at the level whose texels match this output's.

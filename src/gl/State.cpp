@@ -46,10 +46,11 @@ void State::forgetFramebuffer(uint32_t name)
     if (mFramebuffer == name) mFramebuffer = ~0u;
 }
 
-void State::drawTriangles(uint32_t count, bool indexed)
+void State::drawTriangles(uint32_t count, bool indexed, uint32_t firstIndex)
 {
     if (indexed) {
-        glDrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT, nullptr);
+        glDrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(uintptr_t(firstIndex) * sizeof(uint32_t)));
     } else {
         glDrawArrays(GL_TRIANGLES, 0, GLsizei(count));
     }

@@ -83,8 +83,9 @@ public:
     void dispatchCompute(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ = 1);
     static void memoryBarrier(Barrier barriers);
 
-    /// Draws `count` vertices (or 32-bit indices) of the bound vertex array as triangles.
-    void drawTriangles(uint32_t count, bool indexed);
+    /// Draws `count` vertices (or 32-bit indices, from index `firstIndex` of the bound index
+    /// buffer) of the bound vertex array as triangles.
+    void drawTriangles(uint32_t count, bool indexed, uint32_t firstIndex = 0);
     /// Draws `instances` instances of the first `count` vertices, non-indexed (one draw call;
     /// gl_InstanceID runs from 0 in each).
     void drawTrianglesInstanced(uint32_t count, uint32_t instances);

@@ -21,7 +21,7 @@ uint32_t DrawList::orderedBits(float value)
 }
 
 DrawList DrawList::build(const GpuScene& scene, const glm::mat4& view, const glm::mat4& viewProjection, DrawFilter filter,
-                         const std::vector<DrawProgram>& programs)
+                         const std::vector<DrawProgram>& programs, const scene::LodView& lod)
 {
     DrawList list;
     list.mFilter = filter;
@@ -37,8 +37,15 @@ DrawList DrawList::build(const GpuScene& scene, const glm::mat4& view, const glm
         case DrawFilter::Transmissive: if (!transmissive) continue; break;
         case DrawFilter::ShadowCasters: if (!castsShadow(material) || !item.castShadows) continue; break;
         }
-        if (!frustum.intersects(p.bounds.transformed(item.world))) continue;
+        const scene::Bounds world = p.bounds.transformed(item.world);
+        if (!frustum.intersects(world)) continue;
         const glm::vec3 center = glm::vec3(item.world * glm::vec4(p.bounds.center(), 1.0f));
+        int level = 0;
+        if (p.lods.size() > 1) {
+            const glm::mat3 linear(item.world);
+            const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+            level = scene::selectLod(p.lods, scale, world.center(), world.radius(), lod);
+        }
         // View-space z: negative in front of the camera, most negative farthest.
         const float z = (view * glm::vec4(center, 1.0f)).z;
         uint64_t key = 0;
@@ -49,7 +56,7 @@ DrawList DrawList::build(const GpuScene& scene, const glm::mat4& view, const glm
             const uint64_t programBits = program ? program->id() & 0xffffu : 0u;
             key = programBits << 48 | uint64_t(uint32_t(p.material) & 0xffffu) << 32 | orderedBits(-z); // front to back
         }
-        list.mCommands.push_back({key, &item, p.material});
+        list.mCommands.push_back({key, &item, p.material, level});
     }
     std::stable_sort(list.mCommands.begin(), list.mCommands.end(),
                      [](const DrawCommand& a, const DrawCommand& b) { return a.key < b.key; });
@@ -107,8 +114,10 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
             boundMaterial = p.material;
         }
         state.bindVertexArray(p.vertexArray);
-        state.drawTriangles(p.count, p.indexed);
-        triangles += p.count / 3;
+        const uint32_t first = p.indexed && !p.lods.empty() ? p.lods[size_t(command.lod)].first : 0u;
+        const uint32_t count = p.indexed && !p.lods.empty() ? p.lods[size_t(command.lod)].count : p.count;
+        state.drawTriangles(count, p.indexed, first);
+        triangles += count / 3;
     }
     return triangles;
 }

@@ -12,6 +12,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/MeshLod.h"
+
 namespace specula::gl {
 class Program;
 class State;
@@ -35,6 +37,7 @@ struct DrawCommand {
     uint64_t key = 0;
     const DrawItem* item = nullptr;
     int material = 0;
+    int lod = 0; ///< level of detail of the item's primitive (GpuPrimitive::lods)
 };
 
 /// What one material draws with in a pass: its program (and the program's uniform locations)
@@ -78,9 +81,10 @@ struct SubmitOptions {
 class DrawList {
 public:
     /// The scene's draws visible in `viewProjection` that pass `filter`, sorted.
-    /// `programs[material]` orders opaque draws by program.
+    /// `programs[material]` orders opaque draws by program. Each draw takes the level of
+    /// detail `lod` chooses for it (scene::selectLod); the default LodView: full detail.
     static DrawList build(const GpuScene& scene, const glm::mat4& view, const glm::mat4& viewProjection, DrawFilter filter,
-                          const std::vector<DrawProgram>& programs);
+                          const std::vector<DrawProgram>& programs, const scene::LodView& lod = {});
 
     /// Draws the list with `programs[material]` into the bound target. Returns triangles.
     size_t submit(gl::State& state, const GpuScene& scene, const std::vector<DrawProgram>& programs,

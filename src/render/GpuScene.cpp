@@ -5,7 +5,10 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 
+#include "core/Hash.h"
 #include "core/Log.h"
 #include "gl/State.h"
 #include "shading/ShadingVariant.h"
@@ -65,6 +68,28 @@ void packTransform(shared::GpuMaterial& gpu, int slot, const scene::TextureRef& 
     gpu.uvTransform[2 * slot] = glm::vec4(m[0][0], m[1][0], m[2][0], 0.0f);
     gpu.uvTransform[2 * slot + 1] = glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f);
     gpu.flags.y |= uint32_t(ref.texCoord & 3) << (2 * slot);
+}
+
+struct SharedLodChain {
+    const scene::Primitive* source = nullptr;
+    scene::LodChain chain;
+};
+using LodChains = std::unordered_multimap<uint64_t, SharedLodChain>;
+
+/// `p`'s levels of detail, from `chains` when a primitive with the same vertices and indices
+/// was simplified before (a scene's repeated shapes).
+const scene::LodChain& lodChain(LodChains& chains, const scene::Primitive& p)
+{
+    const auto bytes = [](const auto& v) {
+        return std::string_view(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v[0]));
+    };
+    const uint64_t key = fnv1a64(bytes(p.vertices)) ^ (fnv1a64(bytes(p.indices)) * 0x9e3779b97f4a7c15ull);
+    const auto [begin, end] = chains.equal_range(key);
+    for (auto it = begin; it != end; ++it) {
+        const scene::Primitive& s = *it->second.source;
+        if (bytes(s.vertices) == bytes(p.vertices) && bytes(s.indices) == bytes(p.indices)) return it->second.chain;
+    }
+    return chains.emplace(key, SharedLodChain{&p, scene::buildLodChain(p)})->second.chain;
 }
 
 } // namespace
@@ -183,6 +208,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
     const int defaultMaterial = int(materials.size() - 1);
 
     // Primitives, mesh by mesh.
+    LodChains lodChains;
     std::vector<std::vector<int>> meshPrimitives(scene.meshes.size());
     for (size_t meshIndex = 0; meshIndex < scene.meshes.size(); ++meshIndex) {
         for (const scene::Primitive& p : scene.meshes[meshIndex].primitives) {
@@ -190,9 +216,13 @@ GpuScene::GpuScene(const scene::Scene& scene)
             GpuPrimitive gpu;
             const std::string name = scene.meshes[meshIndex].name;
             gpu.vertices = gl::Buffer(p.vertices.size() * sizeof(scene::Vertex), p.vertices.data(), name + " vertices");
-            gpu.indexed = !p.indices.empty();
-            gpu.count = uint32_t(gpu.indexed ? p.indices.size() : p.vertices.size());
-            if (gpu.indexed) gpu.indices = gl::Buffer(p.indices.size() * sizeof(uint32_t), p.indices.data(), name + " indices");
+            // Levels of detail: one index list, level 0 the primitive's own indices. Identical
+            // meshes (a scene's repeated shapes) are simplified once.
+            const scene::LodChain& chain = lodChain(lodChains, p);
+            gpu.indexed = !p.indices.empty() || chain.levels.size() > 1;
+            gpu.count = uint32_t(gpu.indexed ? chain.levels[0].count : p.vertices.size());
+            gpu.lods = chain.levels;
+            if (gpu.indexed) gpu.indices = gl::Buffer(chain.indices.size() * sizeof(uint32_t), chain.indices.data(), name + " indices");
             gpu.material = p.material >= 0 && p.material < defaultMaterial ? p.material : defaultMaterial;
             gpu.bounds = p.bounds;
             gpu.vertexArray = gl::VertexArray(name);

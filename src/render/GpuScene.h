@@ -6,6 +6,7 @@
 #include "gl/Buffer.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
+#include "scene/MeshLod.h"
 #include "scene/Scene.h"
 #include "shaders/shared/MaterialData.h"
 
@@ -15,8 +16,11 @@ struct GpuPrimitive {
     gl::Buffer vertices;
     gl::Buffer indices;
     gl::VertexArray vertexArray;
-    uint32_t count = 0;   ///< indices, or vertices when not indexed
+    uint32_t count = 0;   ///< indices, or vertices when not indexed (level 0)
     bool indexed = false;
+    /// Levels of detail (scene/MeshLod.h) in `indices`: level 0 is the primitive itself; a
+    /// primitive too small for coarser levels has only that one.
+    std::vector<scene::LodLevel> lods;
     int material = 0;     ///< index into GpuScene::materials (the default material is last)
     scene::Bounds bounds; ///< object space
 };

@@ -224,6 +224,14 @@ struct ImageBasedLighting::Impl {
     void bake(gl::State& state, const EnvironmentMap& map, const BakeSettings& s)
     {
         gl::DebugGroup group("bake environment");
+        // Each stage's time (glFinish after it: a bake waits for its results anyway), logged.
+        Stopwatch stage;
+        std::string stages;
+        const auto lap = [&](const std::string& name) {
+            glFinish();
+            stages += fmt::format("{}{} {:.0f} ms", stages.empty() ? "" : ", ", name, stage.elapsedMs());
+            stage = Stopwatch();
+        };
         // Source: RGBA32F so values above the half-float range (a real sun) survive until the cube.
         gl::TextureDesc sourceDesc;
         sourceDesc.format = gl::Format::RGBA32F;
@@ -255,6 +263,7 @@ struct ImageBasedLighting::Impl {
         state.dispatchCompute(uint32_t(groups(s.cubeSize)), uint32_t(groups(s.cubeSize)), 6);
         state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
         cube.generateMipmaps();
+        lap("cube");
 
         gl::TextureDesc prefilteredDesc = cubeDesc;
         prefilteredDesc.width = prefilteredDesc.height = s.prefilterSize;
@@ -274,11 +283,13 @@ struct ImageBasedLighting::Impl {
             state.bindImage(0, prefiltered, level, gl::ImageAccess::WriteOnly, /*layered*/ true);
             const int size = prefiltered.width(level);
             state.dispatchCompute(uint32_t(groups(size)), uint32_t(groups(size)), 6);
-            log::debug("prefiltered level {}/{} ({}²)", level + 1, s.prefilterLevels, size);
+            lap(fmt::format("prefilter {}²", size));
         }
         state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
         sh = projectSh9(map);
         bakeIrradiance(state, map);
+        lap("irradiance");
+        log::info("bake stages: {}", stages);
     }
 
     /// The irradiance cube: the map reduced on the CPU (32-bit float), convolved on the GPU.

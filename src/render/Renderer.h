@@ -116,6 +116,11 @@ struct FrameSettings {
     /// lightCutoff × their illuminance at 1 m, i.e. 1 m / √lightCutoff (100 m by default); the
     /// error that makes is below lightCutoff × that illuminance everywhere. 0: infinite.
     float lightCutoff = 1e-4f;
+    /// Levels of detail (scene/MeshLod.h): each draw seen by the camera uses the coarsest level
+    /// of its mesh whose geometric error on screen is at most this many pixels; 0 (the
+    /// default): every mesh at full detail. Shadow views draw full detail. Off by default: the
+    /// image changes by more than the golden tests allow (docs/performance.md#levels-of-detail).
+    float lodPixels = 0.0f;
     // Post-processing (settings/PassSettings.h): each off by default and then free.
     BloomSettings bloom;
     SsaoSettings ssao;

@@ -121,6 +121,11 @@ void resolvePostSettings(const scene::SceneDocument& document, const FrameOption
         if (!(c >= 0.0f && c < 1.0f)) throw Error("--light-cutoff must be at least 0 and below 1 (got {})", double(c));
         s.lightCutoff = c;
     }
+    if (options.lodPixels) {
+        const float e = *options.lodPixels;
+        if (!(e >= 0.0f && e <= 16.0f)) throw Error("--lod-error must be between 0 and 16 pixels (got {})", double(e));
+        s.lodPixels = e;
+    }
 }
 
 } // namespace

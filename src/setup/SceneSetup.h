@@ -24,6 +24,7 @@ struct FrameOptions {
     // --debug-view shows one buffer instead of the frame.
     std::optional<std::string> brdfD, brdfF, brdfDiffuse, shading, debugView;
     int camera = -1;
+    bool allCameras = false; ///< --camera all (render only: one image per camera)
     bool noDefaultLights = false;
     // Environment: --env FILE|sky|none, --env-color R,G,B, --env-intensity, --env-rotation,
     // --skybox on|off|blur=R, --bake-preset default|reference, --no-cache.
@@ -49,6 +50,7 @@ struct FrameOptions {
     scene::LoadOptions load;
     std::optional<std::string> lightCulling;  ///< clustered | none (--light-culling)
     std::optional<float> lightCutoff;         ///< --light-cutoff
+    std::optional<float> lodPixels;           ///< --lod-error
     std::optional<std::string> transparency;  ///< sorted | oit (--transparency)
     std::optional<int> lights;                ///< the many-lights scene's count (--lights)
 };

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 
 #include "shading/Brdf.h"
 #include "shading/EnvironmentMap.h"
+#include "gl/Program.h"
 #include "gl/State.h"
 #include "gl/Texture.h"
 #include "render/ImageBasedLighting.h"
@@ -531,5 +533,84 @@ TEST_F(GlTest, MirrorReflectsTheMapAtItsOwnResolution)
         const double mean = sum / count;
         std::printf("mirror sphere vs the map, %s: mean relative error %.2f%% over %d pixels\n", name, 100.0 * mean, count);
         EXPECT_LT(mean, 0.02);
+    }
+}
+
+// Each prefiltered level against a converged convolution of the same level (issue 14: no
+// sample pattern may show). The reference is the same GGX-weighted integral at 8192 samples per
+// texel, on every texel of a sparse grid (32² a face), the baked level read at the same texels.
+// Relative error per texel and channel, against the texel plus 2 % of the level's mean (dark
+// texels next to bright sources would otherwise weigh the most). `SPECULA_PREFILTER_SAMPLES=N`
+// bakes with N samples at every level, for measuring (docs/ibl.md has the table).
+// Measured with the default 256 samples: sunset_1k (soft) mean 0.5–1.6 %, p99 3–7.6 % per
+// level; studio_1k (small softboxes 2,000× the mean) mean 10.7–18 %, p99 69–139 %, and still
+// 4.3–6.6 % with 1,024 samples: filtered importance sampling of the GGX lobe alone does not
+// converge under compact bright sources (issue 14's target, 1 %, is not met there). Bounds: the
+// measured figures with a margin, so that a broken filter (the wrong source mip, roughness or
+// weights) fails: sunset mean < 2.5 %, p99 < 10 %; studio mean < 22 %, p99 < 160 %.
+TEST_F(GlTest, PrefilteredLevelsMatchAConvergedConvolution)
+{
+    struct Case {
+        const char* name;
+        double mean, p99;
+    };
+    for (const Case& test : {Case{"studio_1k.hdr", 0.22, 1.6}, Case{"sunset_1k.hdr", 0.025, 0.10}}) {
+        const char* name = test.name;
+        SCOPED_TRACE(name);
+        const render::EnvironmentMap map = render::loadEnvironmentMap(std::string(SPECULA_ASSETS_DIR) + "/env/" + name);
+        gl::State state;
+        render::ImageBasedLighting ibl;
+        render::BakeSettings settings;
+        if (const char* n = std::getenv("SPECULA_PREFILTER_SAMPLES")) settings.prefilterSamples = std::atoi(n);
+        ibl.setEnvironment(state, map, settings);
+        const gl::Texture& cube = ibl.cube();
+        const gl::Texture& baked = ibl.prefiltered();
+        gl::Program reference({.compute = "ibl/prefilter.comp", .label = "converged prefilter"});
+        state.useProgram(reference);
+        state.bindTexture(0, cube);
+        state.bindSampler(0, nullptr);
+        reference.set(reference.uniformLocation("uSamples"), uint32_t(8192));
+        reference.set(reference.uniformLocation("uSourceSize"), float(cube.width()));
+        reference.set(reference.uniformLocation("uSourceLevels"), float(cube.levels()));
+        for (int level = 1; level < baked.levels(); ++level) {
+            const int size = baked.width(level);
+            const int stride = std::max(1, size / 32), grid = size / stride;
+            gl::TextureDesc desc;
+            desc.type = gl::TextureType::Cube;
+            desc.format = gl::Format::RGBA16F;
+            desc.width = desc.height = grid;
+            desc.label = "converged level";
+            gl::Texture converged(desc);
+            reference.set(reference.uniformLocation("uPerceptualRoughness"), float(level) / float(baked.levels() - 1));
+            reference.set(reference.uniformLocation("uStride"), stride);
+            reference.set(reference.uniformLocation("uLevelSize"), size);
+            state.bindImage(0, converged, 0, gl::ImageAccess::WriteOnly, /*layered*/ true);
+            state.dispatchCompute(uint32_t((grid + 7) / 8), uint32_t((grid + 7) / 8), 6);
+            state.memoryBarrier(gl::Barrier::TextureUpdate);
+            const std::vector<float> want = converged.readFloat(0, 4);
+            const std::vector<float> got = baked.readFloat(level, 4);
+            double mean = 0.0;
+            for (size_t i = 0; i < want.size(); ++i)
+                if (i % 4 != 3) mean += want[i];
+            mean /= double(want.size()) * 0.75;
+            std::vector<double> errors;
+            for (int face = 0; face < 6; ++face)
+                for (int y = 0; y < grid; ++y)
+                    for (int x = 0; x < grid; ++x) {
+                        const size_t r = (size_t(face) * grid * grid + size_t(y) * grid + size_t(x)) * 4;
+                        const size_t b = (size_t(face) * size * size + size_t(y * stride + stride / 2) * size +
+                                          size_t(x * stride + stride / 2)) * 4;
+                        for (int c = 0; c < 3; ++c)
+                            errors.push_back(std::abs(got[b + size_t(c)] - want[r + size_t(c)]) / (want[r + size_t(c)] + 0.02 * mean));
+                    }
+            double sum = 0.0;
+            for (double e : errors) sum += e;
+            std::sort(errors.begin(), errors.end());
+            const double meanError = sum / double(errors.size()), p99 = errors[errors.size() * 99 / 100];
+            std::printf("%s prefiltered level %d (%d², roughness %.3f): mean %.3f%%, p99 %.3f%%, max %.3f%%\n", name, level, size,
+                        double(level) / double(baked.levels() - 1), 100.0 * meanError, 100.0 * p99, 100.0 * errors.back());
+            EXPECT_LT(meanError, test.mean) << "level " << level;
+            EXPECT_LT(p99, test.p99) << "level " << level;
+        }
     }
 }

@@ -196,9 +196,13 @@ FrameDrawLists ForwardPass::drawLists(const FrameContext& frame) const
     const GpuScene* scene = frame.stores.scene.get();
     if (!scene) return lists;
     const glm::mat4 viewProjection = frame.view.projection * frame.view.view;
-    lists.opaque = DrawList::build(*scene, frame.view.view, viewProjection, DrawFilter::Opaque, mImpl->materialPrograms);
-    lists.transmissive = DrawList::build(*scene, frame.view.view, viewProjection, DrawFilter::Transmissive, mImpl->materialPrograms);
-    lists.blended = DrawList::build(*scene, frame.view.view, viewProjection, DrawFilter::Blended, mImpl->materialPrograms);
+    // The camera's levels of detail; the pre-pass draws these lists too, so its depth is the
+    // forward pass's to the bit.
+    const scene::LodView lod = scene::lodView(frame.view.view, frame.view.projection, frame.height, frame.settings.lodPixels);
+    const std::vector<DrawProgram>& programs = mImpl->materialPrograms;
+    lists.opaque = DrawList::build(*scene, frame.view.view, viewProjection, DrawFilter::Opaque, programs, lod);
+    lists.transmissive = DrawList::build(*scene, frame.view.view, viewProjection, DrawFilter::Transmissive, programs, lod);
+    lists.blended = DrawList::build(*scene, frame.view.view, viewProjection, DrawFilter::Blended, programs, lod);
     return lists;
 }
 
