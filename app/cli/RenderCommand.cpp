@@ -23,6 +23,7 @@ int runRender(const RenderArgs& args)
     Stopwatch load;
     scene::SceneDocument document = setup::loadSceneOrBuiltin(args.scene, args.frame.load, args.frame.lights);
     const render::FrameSettings settings = setup::resolveSettings(document, args.frame);
+    const setup::AnimationChoice animation = setup::resolveAnimation(document.scene, args.frame);
     const std::optional<render::EnvironmentMap> environment = setup::loadEnvironment(document, args.frame);
     const render::BakeSettings bake = setup::resolveBakeSettings(args.frame);
     int defaultLights = 0;
@@ -36,6 +37,7 @@ int runRender(const RenderArgs& args)
     render::Renderer renderer;
     renderer.setCacheDirectory(setup::cacheDirectory(args.frame));
     renderer.setScene(document.scene);
+    renderer.setPose(animation.index, animation.seconds);
     if (environment) renderer.setEnvironment(*environment, bake, setup::cacheDirectory(args.frame));
     if (!args.printGraph.empty()) {
         const std::string dot = renderer.frameGraphDot(view, settings);
