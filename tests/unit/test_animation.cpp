@@ -3,10 +3,12 @@
 // world transform composed here from axis-angle matrices (not through Pose's quaternions),
 // morph weights, the deformation of vertices, and the import of the test assets and its errors.
 //
-// Broken on purpose (each restored): lerp in place of slerp fails LinearRotationIsSlerp;
-// dropping the keyframe delta td from the cubic tangents fails CubicSplineIsTheSpecsHermite;
-// skipping the inverse bind matrix fails JointMatricesAreWorldTimesInverseBind; ignoring the
-// morph weights fails MorphWeightsFollowTheAnimation and DeformMorphsThenSkins.
+// Broken on purpose (2026-12-03, each restored): normalised lerp in place of slerp fails
+// LinearRotationIsSlerp; dropping the keyframe delta td from the cubic tangents fails
+// CubicSplineIsTheSpecsHermite; skipping the inverse bind matrix fails
+// JointMatricesAreWorldTimesInverseBind and ImportsTheSkinnedBar; ignoring the morph weights in
+// deformPrimitive fails DeformMorphsThenSkins; reading only JOINTS_0/WEIGHTS_0 fails
+// ImportsTheSkinnedBar and BadFilesAreOneLineErrors (the out-of-range joint goes unseen).
 #include <gtest/gtest.h>
 
 #include <cmath>
