@@ -90,6 +90,8 @@ int runBench(const BenchArgs& args)
             s.renderer = std::make_unique<render::Renderer>();
             s.renderer->setCacheDirectory(cache);
             s.renderer->setScene(s.document.scene);
+            const setup::AnimationChoice animation = setup::resolveAnimation(s.document.scene, args.frame);
+            s.renderer->setPose(animation.index, animation.seconds);
             if (environment) s.bake = s.renderer->setEnvironment(*environment, setup::resolveBakeSettings(args.frame), cache);
             s.renderer->render(s.view, s.settings);
             glFinish();

@@ -86,6 +86,9 @@ void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
     command->add_option("--transparency", frame.transparency,
                         "order of blended surfaces: sorted (default: back to front per draw) or oit (weighted blended, no order)");
     command->add_option("--lights", frame.lights, "the many-lights scene's number of point lights (default 1024)");
+    command->add_option("--animation", frame.animation,
+                        "the glTF animation to pose the scene with: its name or index, or none (the rest pose); default: the first");
+    command->add_option("--time", frame.time, "seconds into the animation (default 0; past its end: its last pose)");
     addPostOptions(command, frame);
     addLoadOptions(command, frame.load);
 }

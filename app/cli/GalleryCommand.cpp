@@ -53,6 +53,8 @@ int runGallery(const GalleryArgs& args)
     render::Renderer renderer;
     renderer.setCacheDirectory(setup::cacheDirectory(options));
     renderer.setScene(document.scene);
+    const setup::AnimationChoice animation = setup::resolveAnimation(document.scene, options);
+    renderer.setPose(animation.index, animation.seconds);
     if (environment) renderer.setEnvironment(*environment, setup::resolveBakeSettings(options), setup::cacheDirectory(options));
 
     std::vector<render::SheetTile> tiles;

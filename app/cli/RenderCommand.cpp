@@ -52,6 +52,7 @@ struct LoadedScene {
     std::string name;
     scene::SceneDocument document;
     render::FrameSettings settings;
+    setup::AnimationChoice animation;
     std::optional<render::EnvironmentMap> environment;
     std::vector<Shot> shots;
 };
@@ -88,6 +89,7 @@ int runRender(const RenderArgs& args)
         s.name = sceneName(sceneArg);
         s.document = setup::loadSceneOrBuiltin(sceneArg, args.frame.load, args.frame.lights);
         s.settings = setup::resolveSettings(s.document, args.frame);
+        s.animation = setup::resolveAnimation(s.document.scene, args.frame);
         s.environment = setup::loadEnvironment(s.document, args.frame);
         std::vector<int> cameras{args.frame.camera};
         if (args.frame.allCameras) {
@@ -127,6 +129,7 @@ int runRender(const RenderArgs& args)
     size_t written = 0;
     for (LoadedScene& s : loaded) {
         renderer.setScene(s.document.scene);
+        renderer.setPose(s.animation.index, s.animation.seconds);
         if (s.environment)
             renderer.setEnvironment(*s.environment, bake, setup::cacheDirectory(args.frame));
         else

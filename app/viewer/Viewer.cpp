@@ -63,6 +63,14 @@ void Viewer::loadScene(const std::string& name)
               defaultLights ? " (default rig)" : "");
 
     mRenderer->setScene(document.scene);
+    // The first scene starts where --animation and --time say (paused when --time is given); a
+    // dropped one at its first animation's start, playing.
+    const setup::AnimationChoice animation = first ? setup::resolveAnimation(document.scene, mOptions)
+                                                   : setup::resolveAnimation(document.scene, setup::FrameOptions{});
+    timeline.animation = animation.index;
+    timeline.time = animation.seconds;
+    timeline.playing = !(first && mOptions.time);
+    mPosed.reset();
     if (first) {
         settings.gizmos = true; // the viewer shows where its lights are
         mSettings = settings;
@@ -113,10 +121,37 @@ void Viewer::openFile(const std::string& path)
     }
 }
 
+float Viewer::animationDuration() const
+{
+    const auto& animations = mDocument.scene.animations;
+    if (timeline.animation < 0 || size_t(timeline.animation) >= animations.size()) return 0.0f;
+    return animations[size_t(timeline.animation)].duration();
+}
+
+void Viewer::advanceTimeline(float deltaSeconds)
+{
+    const float duration = animationDuration();
+    if (timeline.playing && duration > 0.0f) {
+        timeline.time += deltaSeconds * timeline.speed;
+        if (timeline.loop) {
+            timeline.time = std::fmod(timeline.time, duration);
+            if (timeline.time < 0.0f) timeline.time += duration; // playing backwards
+        } else {
+            timeline.time = std::clamp(timeline.time, 0.0f, duration);
+        }
+    }
+    const std::pair<int, float> pose{timeline.animation, timeline.time};
+    if (mPosed != pose) {
+        mRenderer->setPose(pose.first, pose.second);
+        mPosed = pose;
+    }
+}
+
 void Viewer::renderFrame(float deltaSeconds)
 {
     const glm::ivec2 size = mContext.framebufferSize();
     if (size.x <= 0 || size.y <= 0) return; // minimised
+    advanceTimeline(deltaSeconds);
     mSettings.width = size.x;
     mSettings.height = size.y;
     mSettings.autoExposure.deltaTime = deltaSeconds;
@@ -190,6 +225,7 @@ bool Viewer::reloadShaders()
         auto fresh = std::make_unique<render::Renderer>();
         fresh->setCacheDirectory(setup::cacheDirectory(mOptions));
         fresh->setScene(mDocument.scene);
+        if (mPosed) fresh->setPose(mPosed->first, mPosed->second);
         fresh->setLights(currentLights(*mRenderer));
         // Every material's edits, from the records the old renderer draws with: the default
         // material's too, and fields plain materials do not hold (the classic ks).

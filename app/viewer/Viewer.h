@@ -43,6 +43,15 @@ struct LightUpload {
     bool onlyThatLight() const { return offset == lightOffset && size == lightSize && bytes == lightSize; }
 };
 
+/// The Animation panel's timeline: which animation, where in it, and whether it plays.
+struct Timeline {
+    int animation = -1;   ///< index into the scene's animations; -1: none (the rest pose)
+    float time = 0.0f;    ///< seconds
+    bool playing = true;
+    float speed = 1.0f;   ///< seconds of animation per second of wall clock
+    bool loop = true;     ///< past the end: from the start again (else it stops there)
+};
+
 class Viewer {
 public:
     Viewer(platform::Context& context, const setup::FrameOptions& options);
@@ -127,11 +136,18 @@ public:
     std::string lastMessage; ///< e.g. where a screenshot went
     float brdfViewDegrees = 30.0f;            ///< BRDF explorer: angle of the view to the normal
     std::array<char, 512> environmentInput{}; ///< Environment panel: the path being typed
+    Timeline timeline;
+    /// The animation's length in seconds (0: none, or no keyframes).
+    float animationDuration() const;
     /// Frame times (ms), oldest first, for the graph.
     std::array<float, 120> frameTimes{};
 
 private:
     void uploadScene();
+    /// Moves the timeline on by `deltaSeconds` when playing, and poses the scene when its
+    /// animation or time changed since the last pose.
+    void advanceTimeline(float deltaSeconds);
+    std::optional<std::pair<int, float>> mPosed; ///< the pose the renderer holds
     platform::Context& mContext;
     setup::FrameOptions mOptions;
     std::unique_ptr<render::Renderer> mRenderer;

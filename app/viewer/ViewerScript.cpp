@@ -169,6 +169,18 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
     if (a == "fly-move") { viewer.camera().move(w.vec3(1)); viewer.useCamera(-1); return 0; }
     if (a == "frame" || a == "reset-camera") { viewer.resetCamera(); return 0; }
     if (a == "camera") { viewer.useCamera(w.integer(1)); return 0; }
+    // The animation timeline.
+    if (a == "animation") {
+        setup::FrameOptions options;
+        options.animation = w.text(1);
+        viewer.timeline.animation = setup::resolveAnimation(viewer.document().scene, options).index;
+        viewer.timeline.time = 0.0f;
+        return 0;
+    }
+    if (a == "time") { viewer.timeline.time = w.number(1); return 0; }
+    if (a == "play") { viewer.timeline.playing = true; return 0; }
+    if (a == "pause") { viewer.timeline.playing = false; return 0; }
+    if (a == "speed") { viewer.timeline.speed = w.number(1); return 0; }
     // Lights.
     if (a == "select-light") { lightAt(viewer, w.integer(1)); viewer.selectedLight = w.integer(1); return 0; }
     if (a == "add-light") {
@@ -323,7 +335,7 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
     if (a == "panel") {
         // panel NAME open|closed: arranges the panels (for screenshots with the UI).
         static const std::map<std::string, std::string> kPanels = {
-            {"statistics", "Statistics"}, {"scene", "Scene"}, {"lights", "Lights"}, {"materials", "Materials"},
+            {"statistics", "Statistics"}, {"scene", "Scene"}, {"animation", "Animation"}, {"lights", "Lights"}, {"materials", "Materials"},
             {"brdf", "BRDF explorer"}, {"environment", "Environment"}, {"post", "Post-processing"}};
         const auto panel = kPanels.find(w.text(1));
         if (panel == kPanels.end()) throw Error("no panel '{}' (statistics, scene, lights, materials, brdf, environment, post)", w.text(1));

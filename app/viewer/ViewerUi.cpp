@@ -132,6 +132,36 @@ void scenePanel(Viewer& viewer)
     }
 }
 
+/// The timeline: which animation, play and pause, scrub, speed, loop.
+void animationPanel(Viewer& viewer)
+{
+    const auto& animations = viewer.document().scene.animations;
+    if (animations.empty() || !panelHeader(viewer, "Animation", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    Timeline& t = viewer.timeline;
+    auto label = [&](int index) {
+        if (index < 0) return std::string("none (rest pose)");
+        const std::string& name = animations[size_t(index)].name;
+        return std::to_string(index) + ": " + (name.empty() ? "unnamed" : name);
+    };
+    if (ImGui::BeginCombo("animation", label(t.animation).c_str())) {
+        for (int i = -1; i < int(animations.size()); ++i)
+            if (ImGui::Selectable(label(i).c_str(), i == t.animation)) {
+                t.animation = i;
+                t.time = 0.0f;
+            }
+        ImGui::EndCombo();
+    }
+    if (ImGui::Button(t.playing ? "pause" : "play")) t.playing = !t.playing;
+    ImGui::SameLine();
+    if (ImGui::Button("|<")) t.time = 0.0f;
+    ImGui::SameLine();
+    ImGui::Checkbox("loop", &t.loop);
+    const float duration = viewer.animationDuration();
+    ImGui::SliderFloat("time (s)", &t.time, 0.0f, std::max(duration, 1e-3f), "%.3f");
+    ImGui::SliderFloat("speed", &t.speed, -2.0f, 4.0f, "%.2fx");
+    ImGui::TextDisabled("%.3f s long", duration);
+}
+
 void lightsPanel(Viewer& viewer)
 {
     if (!panelHeader(viewer, "Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -580,6 +610,7 @@ void drawUi(Viewer& viewer)
     if (!viewer.lastMessage.empty()) ImGui::TextWrapped("%s", viewer.lastMessage.c_str());
     statisticsPanel(viewer);
     scenePanel(viewer);
+    animationPanel(viewer);
     lightsPanel(viewer);
     materialsPanel(viewer);
     brdfPanel(viewer);

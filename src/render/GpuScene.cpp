@@ -11,6 +11,7 @@
 #include "core/Hash.h"
 #include "core/Log.h"
 #include "gl/State.h"
+#include "scene/Pose.h"
 #include "shading/ShadingVariant.h"
 #include "shaders/shared/Bindings.h"
 #include "shaders/shared/MaterialData.h"
@@ -209,33 +210,35 @@ GpuScene::GpuScene(const scene::Scene& scene)
 
     // Primitives, mesh by mesh.
     LodChains lodChains;
+    auto upload = [&](const scene::Primitive& p, const std::string& name) {
+        GpuPrimitive gpu;
+        gpu.vertices = gl::Buffer(p.vertices.size() * sizeof(scene::Vertex), p.vertices.data(), name + " vertices");
+        // Levels of detail: one index list, level 0 the primitive's own indices. Identical
+        // meshes (a scene's repeated shapes, a deformed draw's own copy) are simplified once.
+        const scene::LodChain& chain = lodChain(lodChains, p);
+        gpu.indexed = !p.indices.empty() || chain.levels.size() > 1;
+        gpu.count = uint32_t(gpu.indexed ? chain.levels[0].count : p.vertices.size());
+        gpu.lods = chain.levels;
+        if (gpu.indexed) gpu.indices = gl::Buffer(chain.indices.size() * sizeof(uint32_t), chain.indices.data(), name + " indices");
+        gpu.material = p.material >= 0 && p.material < defaultMaterial ? p.material : defaultMaterial;
+        gpu.bounds = p.bounds;
+        gpu.vertexArray = gl::VertexArray(name);
+        gpu.vertexArray.vertexBuffer(0, gpu.vertices, 0, sizeof(scene::Vertex))
+            .attribute(SPECULA_ATTRIB_POSITION, 0, 3, gl::AttributeType::Float, offsetof(scene::Vertex, position))
+            .attribute(SPECULA_ATTRIB_NORMAL, 0, 3, gl::AttributeType::Float, offsetof(scene::Vertex, normal))
+            .attribute(SPECULA_ATTRIB_TANGENT, 0, 4, gl::AttributeType::Float, offsetof(scene::Vertex, tangent))
+            .attribute(SPECULA_ATTRIB_UV0, 0, 2, gl::AttributeType::Float, offsetof(scene::Vertex, uv0))
+            .attribute(SPECULA_ATTRIB_UV1, 0, 2, gl::AttributeType::Float, offsetof(scene::Vertex, uv1))
+            .attribute(SPECULA_ATTRIB_COLOR, 0, 4, gl::AttributeType::Float, offsetof(scene::Vertex, color));
+        if (gpu.indexed) gpu.vertexArray.indexBuffer(gpu.indices);
+        return gpu;
+    };
     std::vector<std::vector<int>> meshPrimitives(scene.meshes.size());
     for (size_t meshIndex = 0; meshIndex < scene.meshes.size(); ++meshIndex) {
         for (const scene::Primitive& p : scene.meshes[meshIndex].primitives) {
             if (p.vertices.empty()) continue;
-            GpuPrimitive gpu;
-            const std::string name = scene.meshes[meshIndex].name;
-            gpu.vertices = gl::Buffer(p.vertices.size() * sizeof(scene::Vertex), p.vertices.data(), name + " vertices");
-            // Levels of detail: one index list, level 0 the primitive's own indices. Identical
-            // meshes (a scene's repeated shapes) are simplified once.
-            const scene::LodChain& chain = lodChain(lodChains, p);
-            gpu.indexed = !p.indices.empty() || chain.levels.size() > 1;
-            gpu.count = uint32_t(gpu.indexed ? chain.levels[0].count : p.vertices.size());
-            gpu.lods = chain.levels;
-            if (gpu.indexed) gpu.indices = gl::Buffer(chain.indices.size() * sizeof(uint32_t), chain.indices.data(), name + " indices");
-            gpu.material = p.material >= 0 && p.material < defaultMaterial ? p.material : defaultMaterial;
-            gpu.bounds = p.bounds;
-            gpu.vertexArray = gl::VertexArray(name);
-            gpu.vertexArray.vertexBuffer(0, gpu.vertices, 0, sizeof(scene::Vertex))
-                .attribute(SPECULA_ATTRIB_POSITION, 0, 3, gl::AttributeType::Float, offsetof(scene::Vertex, position))
-                .attribute(SPECULA_ATTRIB_NORMAL, 0, 3, gl::AttributeType::Float, offsetof(scene::Vertex, normal))
-                .attribute(SPECULA_ATTRIB_TANGENT, 0, 4, gl::AttributeType::Float, offsetof(scene::Vertex, tangent))
-                .attribute(SPECULA_ATTRIB_UV0, 0, 2, gl::AttributeType::Float, offsetof(scene::Vertex, uv0))
-                .attribute(SPECULA_ATTRIB_UV1, 0, 2, gl::AttributeType::Float, offsetof(scene::Vertex, uv1))
-                .attribute(SPECULA_ATTRIB_COLOR, 0, 4, gl::AttributeType::Float, offsetof(scene::Vertex, color));
-            if (gpu.indexed) gpu.vertexArray.indexBuffer(gpu.indices);
             meshPrimitives[meshIndex].push_back(int(mPrimitives.size()));
-            mPrimitives.push_back(std::move(gpu));
+            mPrimitives.push_back(upload(p, scene.meshes[meshIndex].name));
         }
     }
     // Vertex colours multiply base colour (glTF COLOR_0); the flag lives on the material,
@@ -264,8 +267,40 @@ GpuScene::GpuScene(const scene::Scene& scene)
     mRecords = std::move(gpuMaterials);
     mMaterialCount = int(materials.size());
 
+    // Skins, morph targets and animations make the scene move: keep what posing needs, and
+    // give each draw of a deformed primitive a vertex buffer of its own.
+    bool moves = !scene.animations.empty();
+    for (const scene::MeshInstance& instance : scene.meshInstances())
+        for (const scene::Primitive& p : scene.meshes[size_t(instance.mesh)].primitives)
+            moves = moves || p.deformable();
+    if (moves) {
+        mRig.emplace();
+        mRig->nodes = scene.nodes;
+        mRig->roots = scene.roots;
+        mRig->meshes = scene.meshes;
+        mRig->skins = scene.skins;
+        mRig->animations = scene.animations;
+    }
     for (const scene::MeshInstance& instance : scene.meshInstances()) {
-        for (int primitive : meshPrimitives[size_t(instance.mesh)]) {
+        const auto& sourcePrimitives = scene.meshes[size_t(instance.mesh)].primitives;
+        for (size_t k = 0, drawn = 0; k < sourcePrimitives.size(); ++k) {
+            const scene::Primitive& source = sourcePrimitives[k];
+            if (source.vertices.empty()) continue;
+            int primitive = meshPrimitives[size_t(instance.mesh)][drawn++];
+            const scene::Node& node = scene.nodes[size_t(instance.node)];
+            if (source.deformable()) {
+                DeformedDraw deformed;
+                deformed.draw = mDraws.size();
+                deformed.mesh = instance.mesh;
+                deformed.primitive = int(k);
+                deformed.skinned = node.skin >= 0 && source.influences > 0;
+                mDeformed.push_back(deformed);
+                GpuPrimitive own = upload(source, scene.meshes[size_t(instance.mesh)].name + " (deformed)");
+                own.material = mPrimitives[size_t(primitive)].material;
+                primitive = int(mPrimitives.size());
+                mPrimitives.push_back(std::move(own));
+            }
+            if (mRig) mDrawNode.push_back(instance.node);
             DrawItem item;
             item.primitive = primitive;
             item.world = instance.world;
@@ -274,15 +309,64 @@ GpuScene::GpuScene(const scene::Scene& scene)
             item.castShadows = instance.castShadows;
             item.receiveShadows = instance.receiveShadows;
             mDraws.push_back(item);
-            const GpuPrimitive& p = mPrimitives[size_t(primitive)];
-            mTriangles += p.count / 3;
-            const scene::Bounds world = p.bounds.transformed(item.world);
-            mBounds.extend(world);
-            if (item.castShadows && castsShadow(mMaterials[size_t(p.material)])) mCasterBounds.extend(world);
+            mTriangles += mPrimitives[size_t(primitive)].count / 3;
         }
     }
+    updateBounds();
+    // Morph weights and skins change the shape at rest too.
+    if (!mDeformed.empty()) setPose(-1, 0.0f);
     log::debug("GPU scene: {} primitives, {} draws, {} materials, {} triangles", mPrimitives.size(), mDraws.size(),
                mMaterials.size(), mTriangles);
+}
+
+void GpuScene::updateBounds()
+{
+    mBounds = {};
+    mCasterBounds = {};
+    for (const DrawItem& item : mDraws) {
+        const GpuPrimitive& p = mPrimitives[size_t(item.primitive)];
+        const scene::Bounds world = p.bounds.transformed(item.world);
+        mBounds.extend(world);
+        if (item.castShadows && castsShadow(mMaterials[size_t(p.material)])) mCasterBounds.extend(world);
+    }
+}
+
+size_t GpuScene::setPose(int animation, float seconds)
+{
+    if (!mRig) return 0;
+    const scene::Scene& rig = *mRig;
+    const scene::Pose pose = scene::poseAt(rig, animation, seconds);
+    const std::vector<glm::mat4> world = scene::worldMatrices(rig, pose);
+    for (size_t d = 0; d < mDraws.size(); ++d) {
+        DrawItem& item = mDraws[d];
+        item.world = world[size_t(mDrawNode[d])];
+        item.normalMatrix = glm::transpose(glm::inverse(glm::mat3(item.world)));
+        item.mirrored = glm::determinant(glm::mat3(item.world)) < 0.0f;
+    }
+    size_t uploaded = 0;
+    std::vector<glm::mat4> joints;
+    for (const DeformedDraw& deformed : mDeformed) {
+        DrawItem& item = mDraws[deformed.draw];
+        const int node = mDrawNode[deformed.draw];
+        const scene::Primitive& rest = rig.meshes[size_t(deformed.mesh)].primitives[size_t(deformed.primitive)];
+        joints.clear();
+        if (deformed.skinned) {
+            joints = scene::jointMatrices(rig.skins[size_t(rig.nodes[size_t(node)].skin)], world);
+            // Skinned vertices come out in world space: the mesh node's transform is not applied
+            // (glTF 2.0 spec 3.7.3, skins), and the winding is the file's.
+            item.world = glm::mat4(1.0f);
+            item.normalMatrix = glm::mat3(1.0f);
+            item.mirrored = false;
+        }
+        const std::vector<float> weights = scene::morphWeights(rig, pose, node, rest.targets.size());
+        GpuPrimitive& gpu = mPrimitives[size_t(item.primitive)];
+        scene::deformPrimitive(rest, joints, weights, mScratch, gpu.bounds);
+        gpu.vertices.update(0, mScratch.size() * sizeof(scene::Vertex), mScratch.data());
+        uploaded += mScratch.size() * sizeof(scene::Vertex);
+    }
+    updateBounds();
+    mNodeWorlds = world;
+    return uploaded;
 }
 
 bool castsShadow(const MaterialBinding& material)

@@ -1,6 +1,7 @@
 #pragma once
 // A scene's meshes, textures and materials uploaded to the GPU, and its draw list.
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "gl/Buffer.h"
@@ -81,9 +82,36 @@ public:
     void writeMaterial(int material, size_t offset, size_t size, const void* data);
     size_t textureBytes() const { return mTextureBytes; }
 
+    /// The scene moves: it has animations, or skinned or morphed meshes (whose vertices are
+    /// deformed on the CPU into a vertex buffer of each such draw, so that every pass, the
+    /// shadow and pre-passes too, draws the same deformed positions). A static scene keeps no
+    /// copy of anything and setPose does nothing.
+    bool animated() const { return mRig.has_value(); }
+    /// Poses the scene: animation `animation` (an index into the scene's animations; -1: none,
+    /// the rest pose) at `seconds`. Moves the draws, re-deforms skinned and morphed primitives
+    /// and updates the bounds. Returns the bytes of vertices it uploaded.
+    size_t setPose(int animation, float seconds);
+    /// Every node's world matrix at the last setPose (empty before one, and for a static scene).
+    const std::vector<glm::mat4>& nodeWorlds() const { return mNodeWorlds; }
+
 private:
     const gl::Texture* texture(const scene::Scene& scene, int image, bool srgb);
     const gl::Sampler* sampler(const scene::Scene& scene, int index);
+    void updateBounds();
+
+    /// What posing needs of the scene: its nodes, meshes, skins and animations (no images).
+    std::optional<scene::Scene> mRig;
+    std::vector<int> mDrawNode; ///< per draw: the node that draws it (animated scenes)
+    /// A draw whose primitive is deformed: its own GpuPrimitive, refilled by setPose.
+    struct DeformedDraw {
+        size_t draw = 0;
+        int mesh = 0;
+        int primitive = 0; ///< index within the mesh
+        bool skinned = false;
+    };
+    std::vector<DeformedDraw> mDeformed;
+    std::vector<scene::Vertex> mScratch;
+    std::vector<glm::mat4> mNodeWorlds;
 
     std::vector<GpuPrimitive> mPrimitives;
     std::vector<MaterialBinding> mMaterials;

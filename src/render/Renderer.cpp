@@ -134,6 +134,9 @@ struct Renderer::Impl {
     FrameStats stats;
     bool timing = false;
     bool wallClock = false;
+    /// The node that places each light, while the lights are the scene's (setScene; setLights
+    /// replaces them): setPose moves them with their nodes.
+    std::vector<int> lightNodes;
 
     /// The last frame: its exported textures stay readable until the next one.
     std::unique_ptr<Frame> last;
@@ -215,6 +218,30 @@ void Renderer::setScene(const scene::Scene& scene)
     ++mImpl->stores.casterVersion;
     mImpl->passes.billboards.setScene(scene);
     mImpl->stores.lights.setAll(placeLights(scene));
+    mImpl->lightNodes.clear();
+    for (const scene::LightInstance& instance : scene.lightInstances()) mImpl->lightNodes.push_back(instance.node);
+}
+
+void Renderer::setPose(int animation, float seconds)
+{
+    GpuScene* gpu = mImpl->stores.scene.get();
+    if (!gpu || !gpu->animated()) return;
+    gpu->setPose(animation, seconds);
+    ++mImpl->stores.casterVersion; // the casters may have moved: no shadow map is kept
+    // Lights on animated nodes move with them (as Scene::lightInstances places them).
+    const std::vector<glm::mat4>& world = gpu->nodeWorlds();
+    LightBuffer& lights = mImpl->stores.lights;
+    for (size_t i = 0; i < mImpl->lightNodes.size() && int(i) < lights.count(); ++i) {
+        const size_t node = size_t(mImpl->lightNodes[i]);
+        if (node >= world.size()) continue;
+        PlacedLight placed = lights.light(int(i));
+        const glm::vec3 position(world[node][3]);
+        const glm::vec3 direction = glm::normalize(glm::vec3(world[node] * glm::vec4(0, 0, -1, 0)));
+        if (placed.position == position && placed.direction == direction) continue;
+        placed.position = position;
+        placed.direction = direction;
+        lights.set(int(i), placed);
+    }
 }
 
 BakeReport Renderer::setEnvironment(const EnvironmentMap& map, const BakeSettings& settings, const std::filesystem::path& cacheDirectory)
@@ -533,6 +560,7 @@ const PlacedLight& Renderer::light(int index) const
 
 void Renderer::setLights(const std::vector<PlacedLight>& lights)
 {
+    mImpl->lightNodes.clear(); // no longer the scene's: an animation does not move them
     mImpl->stores.lights.setAll(lights);
 }
 

@@ -192,6 +192,11 @@ public:
 
     /// Uploads a scene (meshes, textures, materials) and its lights.
     void setScene(const scene::Scene& scene);
+    /// Poses the scene of setScene: animation `animation` (an index into its animations; -1:
+    /// the rest pose) at `seconds` (docs/gltf.md#animation). Nodes move, skinned and morphed
+    /// meshes are deformed (every pass draws the deformed vertices), shadow maps are redrawn.
+    /// Nothing for a scene that does not move (no animations, skins or morph targets).
+    void setPose(int animation, float seconds);
 
     // The lights, as many as there are (setScene places the scene's). Changes apply from the
     // next frame.

@@ -288,6 +288,11 @@ void Importer::convertNodes()
                 node.light = *light;
             }
         }
+        if (source.skin >= 0) {
+            at(mModel.skins, source.skin, "skin", where);
+            node.skin = source.skin;
+        }
+        for (double w : source.weights) node.weights.push_back(float(w));
         for (int child : source.children) {
             at(mModel.nodes, child, "node", where);
             node.children.push_back(child);

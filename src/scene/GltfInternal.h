@@ -90,6 +90,8 @@ public:
         convertCameras();
         convertLights();
         convertNodes();
+        convertSkins();
+        convertAnimations();
         chooseRoots();
         return std::move(mScene);
     }
@@ -169,6 +171,18 @@ private:
 
     std::optional<Primitive> convertPrimitive(const tinygltf::Primitive& source, int indicesAccessor, const std::string& where);
     void convertMeshes();
+
+    // -- skins, morph targets, animations (GltfAnimation.cpp) ----------------------------------
+
+    /// JOINTS_n / WEIGHTS_n and the morph targets of a primitive whose POSITION has `vertexCount` elements.
+    /// `draco`: the primitive's decoded KHR_draco_mesh_compression attributes (JOINTS_n and
+    /// WEIGHTS_n may be among them), or null.
+    void readDeformation(const tinygltf::Primitive& source, size_t vertexCount, Primitive& primitive,
+                         const std::string& where, DracoPrimitive* draco);
+    /// Skins, after the nodes: their joints, inverse bind matrices, and the joint indices of
+    /// the meshes the nodes they skin draw.
+    void convertSkins();
+    void convertAnimations();
 
     // -- cameras, lights, nodes (GltfImporter.cpp) ---------------------------------------------
 

@@ -285,6 +285,7 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
     }
     primitive.hasTangents = tangents.has_value();
     primitive.hasColors = colors.has_value();
+    readDeformation(source, vertexCount, primitive, where, draco ? &*draco : nullptr);
 
     if (draco) {
         // decodeDraco has checked them against the vertex count.
@@ -331,14 +332,27 @@ void Importer::convertMeshes()
         const tinygltf::Mesh& source = mModel.meshes[m];
         Mesh mesh;
         mesh.name = source.name;
+        for (double w : source.weights) mesh.weights.push_back(float(w));
         for (size_t p = 0; p < source.primitives.size(); ++p) {
             const auto draco = mDracoIndices.find({m, p});
             const int indices = draco != mDracoIndices.end() ? draco->second : source.primitives[p].indices;
             auto primitive = convertPrimitive(source.primitives[p], indices, fmt::format("mesh {} primitive {}", m, p));
             if (primitive) mesh.primitives.push_back(std::move(*primitive));
         }
+        // glTF 2.0 spec (Morph targets): every primitive of a mesh has the same number of
+        // targets, and the mesh's default weights (if any) one per target.
+        const size_t targets = source.primitives.empty() ? 0 : source.primitives[0].targets.size();
+        for (size_t p = 1; p < source.primitives.size(); ++p)
+            if (source.primitives[p].targets.size() != targets)
+                fail("mesh {}: primitive {} has {} morph targets but primitive 0 has {} (they must match)", m, p,
+                     source.primitives[p].targets.size(), targets);
+        if (!mesh.weights.empty() && mesh.weights.size() != targets)
+            fail("mesh {} has {} weights but {} morph targets", m, mesh.weights.size(), targets);
         mScene.meshes.push_back(std::move(mesh));
     }
 }
+
+// GltfAnimation.cpp reads skins' and animations' accessors through the same reader.
+template AccessorData<float> Importer::read<float>(int, std::string_view) const;
 
 } // namespace specula::scene::gltf_detail

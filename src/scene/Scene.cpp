@@ -54,6 +54,7 @@ void Scene::append(Scene other, const glm::mat4& transform)
     const int cameraBase = int(cameras.size());
     const int lightBase = int(lights.size());
     const int nodeBase = int(nodes.size());
+    const int skinBase = int(skins.size());
 
     auto shiftTexture = [&](TextureRef& ref) {
         if (ref.image >= 0) ref.image += imageBase;
@@ -73,6 +74,7 @@ void Scene::append(Scene other, const glm::mat4& transform)
         if (node.mesh >= 0) node.mesh += meshBase;
         if (node.camera >= 0) node.camera += cameraBase;
         if (node.light >= 0) node.light += lightBase;
+        if (node.skin >= 0) node.skin += skinBase;
         for (int& child : node.children) child += nodeBase;
     }
     auto move = [](auto& to, auto& from) {
@@ -86,6 +88,14 @@ void Scene::append(Scene other, const glm::mat4& transform)
     move(lights, other.lights);
     move(nodes, other.nodes);
     move(warnings, other.warnings);
+    for (auto& skin : other.skins) {
+        for (int& joint : skin.joints) joint += nodeBase;
+        if (skin.skeleton >= 0) skin.skeleton += nodeBase;
+    }
+    move(skins, other.skins);
+    for (auto& animation : other.animations)
+        for (auto& channel : animation.channels) channel.node += nodeBase;
+    move(animations, other.animations);
     // Billboards are in world space, not nodes: place them with the transform here. Their size
     // stays as given (a sprite has no orientation for a rotation or scale to act on).
     for (auto& group : other.billboards) {

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "scene/Animation.h"
 #include "scene/MaterialModel.h"
 
 namespace specula::scene {
@@ -148,11 +149,24 @@ struct Primitive {
     bool hasTangents = false;      ///< tangents came from the file or were generated
     bool hasColors = false;
     Bounds bounds;
+    /// Skinning (glTF JOINTS_0/WEIGHTS_0, and JOINTS_1/WEIGHTS_1): `influences` (0, 4 or 8)
+    /// joint indices into the node's skin and their weights per vertex, vertex after vertex.
+    int influences = 0;
+    std::vector<uint16_t> joints;
+    std::vector<float> weights;
+    /// Morph targets: displacements of POSITION, NORMAL and TANGENT (scene/Animation.h).
+    std::vector<MorphTarget> targets;
+    /// The normals were made per face (the file had none): a deformed copy makes them again.
+    bool flatNormals = false;
+    /// Deformed by a skin or by morph targets (render/GpuScene keeps a vertex buffer per draw).
+    bool deformable() const { return influences > 0 || !targets.empty(); }
 };
 
 struct Mesh {
     std::string name;
     std::vector<Primitive> primitives;
+    /// Default morph target weights (glTF mesh.weights); empty = all 0.
+    std::vector<float> weights;
 };
 
 struct Camera {
@@ -192,6 +206,9 @@ struct Node {
     int mesh = -1;
     int camera = -1;
     int light = -1;
+    int skin = -1; ///< index into Scene::skins: its mesh is skinned by it
+    /// Morph target weights of its mesh (glTF node.weights); empty = the mesh's.
+    std::vector<float> weights;
     std::vector<int> children;
     /// Its mesh casts shadows, and receives them (the scene file's castShadows and
     /// receiveShadows of a model or shape, set on each of its nodes).
@@ -279,6 +296,8 @@ struct Scene {
     std::vector<int> roots;
     /// Camera-facing sprites, in world space (not nodes: they have no transform of their own).
     std::vector<BillboardGroup> billboards;
+    std::vector<Skin> skins;
+    std::vector<Animation> animations;
     /// Warnings met while loading (missing textures...), already logged.
     std::vector<std::string> warnings;
 

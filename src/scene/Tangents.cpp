@@ -75,11 +75,44 @@ constexpr int kMirrored = 1;
 
 } // namespace
 
+namespace {
+
+/// The skin and morph data that run alongside the vertices, re-gathered after the vertices
+/// changed: new vertex i copies old vertex source[i].
+void remapVertexData(Primitive& primitive, const std::vector<uint32_t>& source)
+{
+    const size_t n = size_t(primitive.influences);
+    if (n > 0) {
+        std::vector<uint16_t> joints(source.size() * n);
+        std::vector<float> weights(source.size() * n);
+        for (size_t i = 0; i < source.size(); ++i)
+            for (size_t k = 0; k < n; ++k) {
+                joints[i * n + k] = primitive.joints[size_t(source[i]) * n + k];
+                weights[i * n + k] = primitive.weights[size_t(source[i]) * n + k];
+            }
+        primitive.joints = std::move(joints);
+        primitive.weights = std::move(weights);
+    }
+    for (MorphTarget& target : primitive.targets) {
+        for (std::vector<glm::vec3>* list : {&target.positions, &target.normals, &target.tangents}) {
+            if (list->empty()) continue;
+            std::vector<glm::vec3> moved(source.size());
+            for (size_t i = 0; i < source.size(); ++i) moved[i] = (*list)[source[i]];
+            *list = std::move(moved);
+        }
+    }
+}
+
+} // namespace
+
 void generateFlatNormals(Primitive& primitive)
 {
     std::vector<Vertex> flat;
     const auto tris = triangles(primitive);
     flat.reserve(tris.size() * 3);
+    std::vector<uint32_t> source;
+    source.reserve(tris.size() * 3);
+    for (const auto& t : tris) source.insert(source.end(), t.begin(), t.end());
     for (const auto& t : tris) {
         const Vertex& v0 = primitive.vertices[t[0]];
         const Vertex& v1 = primitive.vertices[t[1]];
@@ -95,6 +128,8 @@ void generateFlatNormals(Primitive& primitive)
     }
     primitive.vertices = std::move(flat);
     primitive.indices.clear();
+    primitive.flatNormals = true;
+    if (primitive.deformable()) remapVertexData(primitive, source);
 }
 
 void generateTangents(Primitive& primitive, int uvSet)
@@ -200,6 +235,14 @@ void generateTangents(Primitive& primitive, int uvSet)
         }
     }
     primitive.hasTangents = true;
+    if (primitive.deformable() && primitive.vertices.size() != vertexCount) {
+        std::vector<uint32_t> source(primitive.vertices.size());
+        for (size_t i = 0; i < vertexCount; ++i) {
+            source[i] = uint32_t(i);
+            if (splitCopy[i] != UINT32_MAX) source[splitCopy[i]] = uint32_t(i);
+        }
+        remapVertexData(primitive, source);
+    }
 }
 
 } // namespace specula::scene

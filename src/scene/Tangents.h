@@ -3,7 +3,8 @@
 
 namespace specula::scene {
 
-/// Replaces normals by face normals (vertices are un-shared so each face is flat).
+/// Replaces normals by face normals (vertices are un-shared so each face is flat). Both
+/// functions carry a primitive's skin and morph target data along with the vertices they copy.
 void generateFlatNormals(Primitive& primitive);
 
 /// Generates per-vertex tangents the MikkTSpace way: per-triangle tangent and bitangent

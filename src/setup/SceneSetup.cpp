@@ -2,6 +2,7 @@
 
 #include "shading/SunExtraction.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <type_traits>
@@ -129,6 +130,38 @@ void resolvePostSettings(const scene::SceneDocument& document, const FrameOption
 }
 
 } // namespace
+
+AnimationChoice resolveAnimation(const scene::Scene& scene, const FrameOptions& options)
+{
+    AnimationChoice choice;
+    if (options.time) {
+        if (!(*options.time >= 0.0f)) throw Error("--time must be 0 or more seconds (got {})", *options.time);
+        choice.seconds = *options.time;
+    }
+    const auto& animations = scene.animations;
+    auto available = [&] {
+        if (animations.empty()) return std::string("the scene has none");
+        std::string list;
+        for (size_t i = 0; i < animations.size(); ++i)
+            list += fmt::format("{}{} '{}'", i ? ", " : "the scene has: ", i, animations[i].name);
+        return list;
+    };
+    if (options.animation) {
+        const std::string& name = *options.animation;
+        if (name == "none") return {-1, choice.seconds};
+        for (size_t i = 0; i < animations.size(); ++i)
+            if (animations[i].name == name) return {int(i), choice.seconds};
+        const bool digits = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) { return c >= '0' && c <= '9'; });
+        if (digits && name.size() < 9 && size_t(std::stoi(name)) < animations.size()) return {std::stoi(name), choice.seconds};
+        throw Error("--animation: no animation '{}' ({})", name, available());
+    }
+    if (animations.empty()) {
+        if (options.time) log::warn("--time {} is ignored: the scene has no animations", *options.time);
+        return choice;
+    }
+    choice.index = 0;
+    return choice;
+}
 
 render::FrameSettings resolveSettings(const scene::SceneDocument& document, const FrameOptions& options)
 {

@@ -53,7 +53,19 @@ struct FrameOptions {
     std::optional<float> lodPixels;           ///< --lod-error
     std::optional<std::string> transparency;  ///< sorted | oit (--transparency)
     std::optional<int> lights;                ///< the many-lights scene's count (--lights)
+    std::optional<float> time;                ///< seconds into the animation (--time)
+    std::optional<std::string> animation;     ///< its name or index, or none (--animation)
 };
+
+/// The pose a frame shows: animation `index` of the scene (-1: none, the rest pose) at `seconds`.
+struct AnimationChoice {
+    int index = -1;
+    float seconds = 0.0f;
+};
+/// --animation NAME|INDEX|none and --time SECONDS over the scene: by default the scene's first
+/// animation, at 0 s. Throws Error naming the flag: a negative time, an animation the scene
+/// does not have (listing those it has). --time on a scene without animations is a warning.
+AnimationChoice resolveAnimation(const scene::Scene& scene, const FrameOptions& options);
 
 /// `name` is a .gltf/.glb/.json path, or a built-in scene (scene/BuiltinScenes.h); empty = demo.
 /// `lights`: the many-lights scene's count.

@@ -428,3 +428,48 @@ TEST(CliViewer, UnlitMaterialInTheMaterialsPanel)
     ASSERT_EQ(r.exitCode, 0) << r.err; // non-zero on any GL debug error
     EXPECT_TRUE(std::filesystem::exists(out));
 }
+
+// The Animation panel's timeline driven by a script: scrubbing poses the scene, another
+// animation poses it otherwise, and a viewer started with --animation and --time (paused there)
+// shows the frame the script scrubbed to.
+TEST(CliViewer, AnimationTimelinePosesTheScene)
+{
+    ASSERT_TRUE(haveDisplay()) << "no display: run through scripts/test.sh, which uses Xvfb (a window test must not skip)";
+    const std::string dir = tempDir("viewer-animation");
+    const std::string bar = std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/skinned_bar.gltf";
+    std::ofstream(dir + "/script.txt") << "pause\n"
+                                          "time 0\n"
+                                          "frames 1\n"
+                                          "screenshot " << dir << "/straight.png\n"
+                                          "time 1\n"
+                                          "frames 1\n"
+                                          "screenshot " << dir << "/bent.png\n"
+                                          "play\n"
+                                          "speed 2\n"
+                                          "frames 3\n"
+                                          "animation lift\n"
+                                          "pause\n"
+                                          "time 1\n"
+                                          "frames 1\n"
+                                          "screenshot " << dir << "/lifted.png\n"
+                                          "panel animation open\n"
+                                          "screenshot-window " << dir << "/window.png\n"
+                                          "expect-no-error\n";
+    const std::string size = " --width 200 --height 150 --env none --no-cache";
+    const auto r = runCli("view " + bar + size + " --script " + dir + "/script.txt");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto started = runCli("view " + bar + size + " --animation bend --time 1 --frames 2 --screenshot " + dir + "/started.png");
+    ASSERT_EQ(started.exitCode, 0) << started.err;
+    const auto straight = specula::readPng(dir + "/straight.png");
+    const auto bent = specula::readPng(dir + "/bent.png");
+    const auto lifted = specula::readPng(dir + "/lifted.png");
+    EXPECT_GT(meanDifference(straight, bent), 0.2) << "scrubbing did not pose the bar";
+    EXPECT_GT(meanDifference(straight, lifted), 0.2) << "the lift animation did not move the bar";
+    EXPECT_GT(meanDifference(bent, lifted), 0.2);
+    EXPECT_LT(meanDifference(bent, specula::readPng(dir + "/started.png")), 0.01) << "--animation bend --time 1 is not the scrubbed pose";
+
+    std::ofstream(dir + "/bad.txt") << "animation walk\n";
+    const auto bad = runCli("view " + bar + size + " --script " + dir + "/bad.txt");
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_NE(bad.err.find("bad.txt:1: --animation: no animation 'walk' (the scene has: 0 'bend', 1 'lift')"), std::string::npos) << bad.err;
+}

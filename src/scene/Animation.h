@@ -1,0 +1,67 @@
+#pragma once
+// glTF animation as plain data (samplers, channels, skins, morph targets) and the evaluation of
+// a sampler at a time, as the glTF 2.0 specification defines it (section 3.11 and Appendix C).
+// What a pose does to a scene's nodes and vertices is scene/Pose.h.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace specula::scene {
+
+enum class Interpolation { Step, Linear, CubicSpline };
+enum class AnimationPath { Translation, Rotation, Scale, Weights };
+
+/// Keyframes: `times` in seconds, strictly increasing; per keyframe `components` floats of
+/// `values` (Step, Linear), or three groups of them for CubicSpline: in-tangent, value,
+/// out-tangent. Components: 3 (translation, scale), 4 (rotation, x y z w), or a mesh's number
+/// of morph targets (weights).
+struct AnimationSampler {
+    Interpolation interpolation = Interpolation::Linear;
+    std::vector<float> times;
+    std::vector<float> values;
+    int components = 0;
+};
+
+struct AnimationChannel {
+    int sampler = 0; ///< index into its Animation::samplers
+    int node = 0;    ///< index into Scene::nodes
+    AnimationPath path = AnimationPath::Translation;
+};
+
+struct Animation {
+    std::string name;
+    std::vector<AnimationSampler> samplers;
+    std::vector<AnimationChannel> channels;
+    /// The last keyframe time of any sampler (seconds); 0 without keyframes.
+    float duration() const;
+};
+
+/// glTF skin: the nodes that are its joints, and per joint the matrix from the mesh's bind
+/// space into the joint's (identity when the file gives none).
+struct Skin {
+    std::string name;
+    std::vector<int> joints;
+    std::vector<glm::mat4> inverseBindMatrices;
+    int skeleton = -1; ///< the file's skeleton root (informative: joint matrices do not use it)
+};
+
+/// One morph target of a primitive: displacements per vertex, each list empty or one per vertex.
+struct MorphTarget {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec3> tangents;
+};
+
+/// The sampler's value at time `t` (seconds) into `out` (`components` floats). Before the first
+/// keyframe the first value holds, after the last the last (the glTF spec's clamping). Linear
+/// rotations are spherical (slerp along the shorter arc); rotations of every interpolation come
+/// out normalised. `rotation`: the channel animates a rotation (a quaternion, x y z w).
+void evaluateSampler(const AnimationSampler& sampler, float t, bool rotation, float* out);
+
+/// Shorter-arc spherical interpolation of unit quaternions, normalised (glTF spec Appendix C).
+glm::quat slerpShortest(glm::quat a, glm::quat b, float s);
+
+} // namespace specula::scene

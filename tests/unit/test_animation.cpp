@@ -1,0 +1,332 @@
+// glTF animation on the CPU: samplers (STEP, LINEAR with slerp, CUBICSPLINE) against values
+// worked out by hand from the glTF 2.0 spec's formulas (Appendix C), joint matrices against a
+// world transform composed here from axis-angle matrices (not through Pose's quaternions),
+// morph weights, the deformation of vertices, and the import of the test assets and its errors.
+//
+// Broken on purpose (2026-12-03, each restored): normalised lerp in place of slerp fails
+// LinearRotationIsSlerp; dropping the keyframe delta td from the cubic tangents fails
+// CubicSplineIsTheSpecsHermite; skipping the inverse bind matrix fails
+// JointMatricesAreWorldTimesInverseBind and ImportsTheSkinnedBar; ignoring the morph weights in
+// deformPrimitive fails DeformMorphsThenSkins; reading only JOINTS_0/WEIGHTS_0 fails
+// ImportsTheSkinnedBar and BadFilesAreOneLineErrors (the out-of-range joint goes unseen).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "TestFiles.h"
+#include "scene/Animation.h"
+#include "scene/GltfImporter.h"
+#include "scene/Pose.h"
+
+using namespace specula;
+using namespace specula::scene;
+
+namespace {
+
+const std::string kAssets = std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/";
+
+AnimationSampler sampler(Interpolation interpolation, std::vector<float> times, std::vector<float> values, int components)
+{
+    return {interpolation, std::move(times), std::move(values), components};
+}
+
+float at1(const AnimationSampler& s, float t)
+{
+    float v = 0.0f;
+    evaluateSampler(s, t, false, &v);
+    return v;
+}
+
+glm::vec4 rotationAt(const AnimationSampler& s, float t)
+{
+    glm::vec4 q;
+    evaluateSampler(s, t, true, &q.x);
+    return q;
+}
+
+/// (x, y, z, w) of a rotation by `degrees` about the unit `axis`.
+glm::vec4 axisAngle(glm::vec3 axis, float degrees)
+{
+    const float h = glm::radians(degrees) / 2.0f;
+    return {axis * std::sin(h), std::cos(h)};
+}
+
+void expectNear(const glm::vec4& got, const glm::vec4& want, float tolerance)
+{
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(got[c], want[c], tolerance) << "component " << c;
+}
+
+std::string readText(const std::string& path)
+{
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// The bar asset with `edit` applied to its JSON, loaded from memory.
+Scene loadEditedBar(const std::function<void(nlohmann::json&)>& edit)
+{
+    nlohmann::json doc = nlohmann::json::parse(readText(kAssets + "skinned_bar.gltf"));
+    edit(doc);
+    const std::string text = doc.dump();
+    return loadGltfFromMemory(std::vector<unsigned char>(text.begin(), text.end()), kAssets + "edited.gltf");
+}
+
+} // namespace
+
+TEST(AnimationSampler, StepHoldsEachKeyUntilTheNext)
+{
+    const auto s = sampler(Interpolation::Step, {0.0f, 1.0f, 3.0f}, {10.0f, 20.0f, 40.0f}, 1);
+    EXPECT_EQ(at1(s, -1.0f), 10.0f); // before the first key: the first value
+    EXPECT_EQ(at1(s, 0.0f), 10.0f);
+    EXPECT_EQ(at1(s, 0.999f), 10.0f);
+    EXPECT_EQ(at1(s, 1.0f), 20.0f);
+    EXPECT_EQ(at1(s, 2.9f), 20.0f);
+    EXPECT_EQ(at1(s, 3.0f), 40.0f);
+    EXPECT_EQ(at1(s, 9.0f), 40.0f); // after the last: the last
+}
+
+TEST(AnimationSampler, LinearInterpolatesEachComponent)
+{
+    const auto s = sampler(Interpolation::Linear, {1.0f, 3.0f}, {0, 0, 0, 2, 4, -6}, 3);
+    glm::vec3 v;
+    evaluateSampler(s, 1.5f, false, &v.x); // a quarter of the way
+    EXPECT_NEAR(v.x, 0.5f, 1e-6f);
+    EXPECT_NEAR(v.y, 1.0f, 1e-6f);
+    EXPECT_NEAR(v.z, -1.5f, 1e-6f);
+    evaluateSampler(s, 0.0f, false, &v.x);
+    EXPECT_EQ(v, glm::vec3(0.0f));
+    evaluateSampler(s, 4.0f, false, &v.x);
+    EXPECT_EQ(v, glm::vec3(2, 4, -6));
+}
+
+TEST(AnimationSampler, LinearRotationIsSlerp)
+{
+    // Between rotations about one axis, slerp turns at a constant rate: at u the angle is
+    // u × 160°. Normalised linear interpolation would give 52.6° at u = 0.25, not 40°.
+    const glm::vec4 a = axisAngle({0, 0, 1}, 0.0f), b = axisAngle({0, 0, 1}, 160.0f);
+    const auto s = sampler(Interpolation::Linear, {0.0f, 1.0f}, {a.x, a.y, a.z, a.w, b.x, b.y, b.z, b.w}, 4);
+    for (float u : {0.1f, 0.25f, 0.5f, 0.8f}) {
+        SCOPED_TRACE(u);
+        const glm::vec4 q = rotationAt(s, u);
+        expectNear(q, axisAngle({0, 0, 1}, 160.0f * u), 1e-5f);
+        EXPECT_NEAR(glm::length(q), 1.0f, 1e-6f);
+    }
+}
+
+TEST(AnimationSampler, LinearRotationTakesTheShorterArcAndIsNormalised)
+{
+    // b stored as -q (the same rotation as +90° about Z): the way from a is 90°, not 270°.
+    const glm::vec4 a = axisAngle({0, 0, 1}, 0.0f), b = -axisAngle({0, 0, 1}, 90.0f);
+    const auto s = sampler(Interpolation::Linear, {0.0f, 1.0f}, {a.x, a.y, a.z, a.w, b.x, b.y, b.z, b.w}, 4);
+    expectNear(rotationAt(s, 0.5f), axisAngle({0, 0, 1}, 45.0f), 1e-5f);
+    // Keys that are not unit length come out normalised (STEP and at the keys too).
+    const auto scaled = sampler(Interpolation::Step, {0.0f}, {0, 0, 0, 3}, 4);
+    expectNear(rotationAt(scaled, 0.0f), {0, 0, 0, 1}, 1e-6f);
+}
+
+TEST(AnimationSampler, CubicSplineIsTheSpecsHermite)
+{
+    // Keys at 0 s and 2 s (td = 2): key 0 value 1, out-tangent 3; key 1 in-tangent -1, value 5.
+    // p(s) = (2s³-3s²+1)v0 + td(s³-2s²+s)b0 + (-2s³+3s²)v1 + td(s³-s²)a1, worked by hand:
+    // t = 0.5 (s = 0.25): 0.84375 + 2(0.140625)(3) + 0.15625(5) + 2(-0.046875)(-1) = 2.5625;
+    // t = 1.5 (s = 0.75): 0.15625 + 2(0.046875)(3) + 0.84375(5) + 2(-0.140625)(-1) = 4.9375.
+    const auto s = sampler(Interpolation::CubicSpline, {0.0f, 2.0f}, {0.0f, 1.0f, 3.0f, -1.0f, 5.0f, 0.0f}, 1);
+    EXPECT_NEAR(at1(s, 0.5f), 2.5625f, 1e-5f);
+    EXPECT_NEAR(at1(s, 1.5f), 4.9375f, 1e-5f);
+    EXPECT_EQ(at1(s, 0.0f), 1.0f);
+    EXPECT_EQ(at1(s, 2.0f), 5.0f);
+    EXPECT_EQ(at1(s, 7.0f), 5.0f);
+    // A cubic rotation comes out normalised.
+    const auto r = sampler(Interpolation::CubicSpline, {0.0f, 1.0f},
+                           {0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0}, 4);
+    EXPECT_NEAR(glm::length(rotationAt(r, 0.3f)), 1.0f, 1e-6f);
+}
+
+TEST(AnimationPose, JointMatricesAreWorldTimesInverseBind)
+{
+    // root (T(1, 0, 0) R_y(30°)) > upper (T(0, 2, 0), rotation animated about X from 0° to
+    // 90° over 2 s) > lower (T(0, 1, 0) S(2)); joints upper and lower.
+    Scene s;
+    Node root;
+    root.translation = {1, 0, 0};
+    root.rotation = glm::angleAxis(glm::radians(30.0f), glm::vec3(0, 1, 0));
+    const int r = s.addNode(root);
+    Node upper;
+    upper.translation = {0, 2, 0};
+    const int u = s.addNode(upper, r);
+    Node lower;
+    lower.translation = {0, 1, 0};
+    lower.scale = glm::vec3(2.0f);
+    const int l = s.addNode(lower, u);
+    Skin skin;
+    skin.joints = {u, l};
+    const glm::mat4 ibm0 = glm::translate(glm::mat4(1.0f), {0.0f, -2.0f, 0.3f});
+    const glm::mat4 ibm1 = glm::scale(glm::translate(glm::mat4(1.0f), {0.5f, -3.0f, 0.0f}), glm::vec3(0.5f, 0.25f, 1.0f));
+    skin.inverseBindMatrices = {ibm0, ibm1};
+    s.skins.push_back(skin);
+    Animation a;
+    const glm::vec4 q0 = axisAngle({1, 0, 0}, 0.0f), q1 = axisAngle({1, 0, 0}, 90.0f);
+    a.samplers.push_back(sampler(Interpolation::Linear, {0.0f, 2.0f}, {q0.x, q0.y, q0.z, q0.w, q1.x, q1.y, q1.z, q1.w}, 4));
+    a.channels.push_back({0, u, AnimationPath::Rotation});
+    s.animations.push_back(a);
+
+    for (float t : {0.0f, 0.5f, 2.0f}) {
+        SCOPED_TRACE(t);
+        // The same transforms from axis-angle matrices, composed by hand.
+        const glm::mat4 rootWorld = glm::rotate(glm::translate(glm::mat4(1.0f), {1, 0, 0}), glm::radians(30.0f), {0, 1, 0});
+        const glm::mat4 upperWorld =
+            rootWorld * glm::rotate(glm::translate(glm::mat4(1.0f), {0, 2, 0}), glm::radians(45.0f * t), {1, 0, 0});
+        const glm::mat4 lowerWorld = upperWorld * glm::scale(glm::translate(glm::mat4(1.0f), {0, 1, 0}), glm::vec3(2.0f));
+        const glm::mat4 want[2] = {upperWorld * ibm0, lowerWorld * ibm1};
+        const auto joints = jointMatrices(s.skins[0], worldMatrices(s, poseAt(s, 0, t)));
+        ASSERT_EQ(joints.size(), 2u);
+        for (int j = 0; j < 2; ++j)
+            for (int c = 0; c < 4; ++c)
+                for (int k = 0; k < 4; ++k) EXPECT_NEAR(joints[size_t(j)][c][k], want[j][c][k], 1e-5f) << j << " " << c << k;
+    }
+}
+
+TEST(AnimationPose, MorphWeightsFollowTheAnimation)
+{
+    Scene s;
+    Mesh mesh;
+    Primitive p;
+    p.vertices.resize(1);
+    p.targets.resize(2);
+    mesh.primitives.push_back(p);
+    mesh.weights = {0.25f, 0.0f};
+    s.meshes.push_back(mesh);
+    Node node;
+    node.mesh = 0;
+    const int n = s.addNode(node);
+    Animation a;
+    a.samplers.push_back(sampler(Interpolation::Linear, {0.0f, 1.0f}, {0.0f, 0.0f, 1.0f, 0.5f}, 2));
+    a.channels.push_back({0, n, AnimationPath::Weights});
+    s.animations.push_back(a);
+
+    EXPECT_EQ(morphWeights(s, poseAt(s, -1, 0.0f), n, 2), (std::vector<float>{0.25f, 0.0f})); // the mesh's
+    const auto w = morphWeights(s, poseAt(s, 0, 0.25f), n, 2);
+    EXPECT_NEAR(w[0], 0.25f, 1e-6f);
+    EXPECT_NEAR(w[1], 0.125f, 1e-6f);
+    EXPECT_EQ(morphWeights(s, poseAt(s, 0, 3.0f), n, 2), (std::vector<float>{1.0f, 0.5f}));
+    s.nodes[size_t(n)].weights = {0.5f, 0.75f}; // the node's own weights win over the mesh's
+    EXPECT_EQ(morphWeights(s, poseAt(s, -1, 0.0f), n, 2), (std::vector<float>{0.5f, 0.75f}));
+}
+
+TEST(AnimationPose, DeformMorphsThenSkins)
+{
+    Primitive p;
+    Vertex v;
+    v.position = {1, 0, 0};
+    v.normal = {0, 0, 1};
+    v.tangent = {1, 0, 0, -1};
+    p.vertices = {v};
+    MorphTarget target;
+    target.positions = {{0, 2, 0}};
+    target.normals = {{0, 1, -1}};   // at weight 1 the normal is (0, 1, 0)
+    target.tangents = {{-1, 0, 1}};  // at weight 1 the tangent is (0, 0, 1)
+    p.targets = {target};
+    p.influences = 8; // both sets: weight 0.25 on joint 0 (first set), 0.75 on joint 1 (second)
+    p.joints = {0, 0, 0, 0, 1, 0, 0, 0};
+    p.weights = {0.25f, 0, 0, 0, 0.75f, 0, 0, 0};
+    const glm::mat4 j0 = glm::translate(glm::mat4(1.0f), {0, 0, 4});
+    const glm::mat4 j1 = glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), {0, 0, 1}); // x -> y, y -> -x
+    std::vector<Vertex> out;
+    Bounds bounds;
+    deformPrimitive(p, {j0, j1}, {1.0f}, out, bounds);
+    ASSERT_EQ(out.size(), 1u);
+    // Morphed: p = (1, 2, 0), n = (0, 1, 0), t = (0, 0, 1). Skinned by 0.25 j0 + 0.75 j1:
+    // 0.25 (1, 2, 4) + 0.75 (-2, 1, 0) = (-1.25, 1.25, 1).
+    EXPECT_NEAR(out[0].position.x, -1.25f, 1e-5f);
+    EXPECT_NEAR(out[0].position.y, 1.25f, 1e-5f);
+    EXPECT_NEAR(out[0].position.z, 1.0f, 1e-5f);
+    // The blended 3x3 is 0.25 I + 0.75 R: n = (0, 1, 0) goes to (-0.75, 0.25, 0) / |…| by the
+    // inverse transpose (this matrix is a scaled rotation, so the same direction).
+    const glm::vec3 n = glm::normalize(glm::vec3(-0.75f, 0.25f, 0.0f));
+    EXPECT_NEAR(glm::dot(out[0].normal, n), 1.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(glm::vec3(out[0].tangent), glm::vec3(0, 0, 1)), 1.0f, 1e-5f);
+    EXPECT_EQ(out[0].tangent.w, -1.0f);
+    EXPECT_EQ(bounds.min, out[0].position);
+    // With weight 0 the target does nothing, and without joints there is no skinning.
+    deformPrimitive(p, {}, {0.0f}, out, bounds);
+    EXPECT_EQ(out[0].position, v.position);
+}
+
+TEST(GltfAnimation, ImportsTheSkinnedBar)
+{
+    const Scene s = loadGltf(kAssets + "skinned_bar.gltf");
+    ASSERT_EQ(s.skins.size(), 1u);
+    EXPECT_EQ(s.skins[0].joints, (std::vector<int>{1, 2}));
+    EXPECT_EQ(s.skins[0].inverseBindMatrices[1], glm::translate(glm::mat4(1.0f), {0, -1, 0}));
+    EXPECT_EQ(s.nodes[0].skin, 0);
+    const Primitive& bar = s.meshes[0].primitives[0];
+    EXPECT_EQ(bar.influences, 8); // JOINTS_0/WEIGHTS_0 and JOINTS_1/WEIGHTS_1
+    ASSERT_EQ(bar.joints.size(), bar.vertices.size() * 8);
+    ASSERT_EQ(s.animations.size(), 2u);
+    EXPECT_EQ(s.animations[0].name, "bend");
+    EXPECT_EQ(s.animations[1].name, "lift");
+    EXPECT_EQ(s.animations[0].duration(), 1.0f);
+    EXPECT_EQ(s.animations[1].samplers[0].interpolation, Interpolation::Step);
+    // At t = 1 the top of the bar, (±0.1, 2, ±0.1) at rest, is turned 90° about the bend
+    // joint at (0, 1, 0): x = -1, y in 0.9..1.1.
+    const Pose pose = poseAt(s, 0, 1.0f);
+    const auto joints = jointMatrices(s.skins[0], worldMatrices(s, pose));
+    std::vector<Vertex> out;
+    Bounds bounds;
+    deformPrimitive(bar, joints, {}, out, bounds);
+    EXPECT_NEAR(bounds.min.x, -1.0f, 1e-5f);
+    EXPECT_NEAR(bounds.max.y, 1.1f, 1e-5f);
+}
+
+TEST(GltfAnimation, ImportsTheMorphQuad)
+{
+    const Scene s = loadGltf(kAssets + "morph_quad.gltf");
+    ASSERT_EQ(s.meshes[0].primitives[0].targets.size(), 2u);
+    EXPECT_EQ(s.meshes[0].weights, (std::vector<float>{0.25f, 0.0f}));
+    ASSERT_EQ(s.animations.size(), 1u);
+    EXPECT_EQ(s.animations[0].samplers[0].components, 2);
+    EXPECT_EQ(s.animations[0].channels[0].path, AnimationPath::Weights);
+}
+
+TEST(GltfAnimation, BadFilesAreOneLineErrors)
+{
+    using test::errorOf;
+    EXPECT_NE(errorOf([] { loadEditedBar([](nlohmann::json& d) { d["skins"][0]["joints"] = {1}; }); })
+                  .find("uses joint 1 (the skin has 1)"),
+              std::string::npos);
+    EXPECT_NE(errorOf([] { loadEditedBar([](nlohmann::json& d) { d["skins"][0]["joints"] = {1, 17}; }); })
+                  .find("refers to node 17"),
+              std::string::npos);
+    EXPECT_NE(errorOf([] { loadEditedBar([](nlohmann::json& d) { d["animations"][0]["channels"][0]["sampler"] = 3; }); })
+                  .find("refers to sampler 3"),
+              std::string::npos);
+    EXPECT_NE(errorOf([] { loadEditedBar([](nlohmann::json& d) { d["animations"][0]["channels"][0]["target"]["node"] = 9; }); })
+                  .find("refers to node 9"),
+              std::string::npos);
+    EXPECT_NE(errorOf([] {
+                  loadEditedBar([](nlohmann::json& d) { d["animations"][0]["samplers"][0]["interpolation"] = "CUBICSPLINE"; });
+              }).find("output numbers for 2 keyframes"),
+              std::string::npos);
+    EXPECT_NE(errorOf([] { loadEditedBar([](nlohmann::json& d) { d["animations"][0]["channels"][0]["target"]["path"] = "weights"; }); })
+                  .find("whose mesh has no morph targets"),
+              std::string::npos);
+    // JOINTS as floats is not glTF.
+    EXPECT_NE(errorOf([] {
+                  loadEditedBar([](nlohmann::json& d) {
+                      d["accessors"][2]["componentType"] = 5126;
+                  });
+              }).find("JOINTS_0"),
+              std::string::npos);
+    EXPECT_NE(errorOf([] { loadEditedBar([](nlohmann::json& d) { d["nodes"][0]["skin"] = 4; }); }).find("refers to skin 4"),
+              std::string::npos);
+    EXPECT_NE(errorOf([] { loadEditedBar([](nlohmann::json& d) { d["skins"][0]["inverseBindMatrices"] = 0; }); }).find("MAT4"),
+              std::string::npos);
+}
