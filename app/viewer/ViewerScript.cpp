@@ -269,6 +269,11 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         return 0;
     }
     if (a == "material-roughness") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Roughness, glm::vec4(w.number(2))); return 0; }
+    if (a == "material-clearcoat") {
+        viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::ClearcoatFactor, glm::vec4(w.number(2)));
+        if (w.size() > 3) viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::ClearcoatRoughness, glm::vec4(w.number(3)));
+        return 0;
+    }
     if (a == "material-metallic") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Metallic, glm::vec4(w.number(2))); return 0; }
     if (a == "material-emissive") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Emissive, glm::vec4(w.vec3(2), 0.0f)); return 0; }
     if (a == "material-ior") { viewer.setMaterialIor(w.integer(1), w.number(2)); return 0; }

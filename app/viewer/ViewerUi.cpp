@@ -337,6 +337,12 @@ void materialsPanel(Viewer& viewer)
         ImGui::TextDisabled("F0 %.3f", f0);
     }
     ImGui::Separator();
+    ImGui::TextDisabled("KHR_materials_clearcoat");
+    float clearcoat = value(MaterialParameter::ClearcoatFactor).x, clearcoatRoughness = value(MaterialParameter::ClearcoatRoughness).x;
+    if (ImGui::SliderFloat("clearcoat", &clearcoat, 0.0f, 1.0f)) set(MaterialParameter::ClearcoatFactor, glm::vec4(clearcoat));
+    if (ImGui::SliderFloat("clearcoat roughness", &clearcoatRoughness, 0.0f, 1.0f))
+        set(MaterialParameter::ClearcoatRoughness, glm::vec4(clearcoatRoughness));
+    ImGui::Separator();
     ImGui::TextDisabled("Phong, Blinn-Phong, Gouraud, flat");
     glm::vec4 ks = value(MaterialParameter::PhongSpecular);
     if (ImGui::ColorEdit3("specular ks", &ks.x)) set(MaterialParameter::PhongSpecular, ks);
@@ -368,6 +374,10 @@ void brdfPanel(Viewer& viewer)
     material.specularFactor = value(MaterialParameter::SpecularFactor).x;
     material.phongSpecular = glm::dvec3(glm::vec3(value(MaterialParameter::PhongSpecular)));
     material.shininess = value(MaterialParameter::Shininess).x;
+    if (renderer.materialParameter(m, MaterialParameter::ClearcoatFactor).x > 0.0f) {
+        material.clearcoat = value(MaterialParameter::ClearcoatFactor).x;
+        material.clearcoatRoughness = value(MaterialParameter::ClearcoatRoughness).x;
+    }
     const render::FrameSettings& settings = viewer.settings();
     const render::ResolvedShading shading =
         render::resolveShading(settings.materialOverride, settings.brdfGeometry, render::packShading(renderer.materialShading(m)));

@@ -3,7 +3,8 @@
 // orchestrates; the BRDF lives in brdf/, light falloff in lights/.
 // Material features are compile-time variants (see Renderer's variant key): HAS_*_TEXTURE,
 // VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND (premultiplied output; BLEND_TRANSPARENT: specular and
-// emission unscaled by alpha), TRANSMISSION (forward/transmission.glsl), DOUBLE_SIDED; OIT
+// emission unscaled by alpha), TRANSMISSION (forward/transmission.glsl), CLEARCOAT
+// (forward/clearcoat.glsl), DOUBLE_SIDED; OIT
 // (weighted blended transparency's two targets); per frame, SSAO, and DOOM_INDEXED (a
 // Doom frame: with SHADING_DOOM, the output is a palette index and a colour-map level, not a
 // colour; render/DoomPass). A material without a feature pays nothing for it; without
@@ -67,6 +68,9 @@ const float kHalfMax = 65504.0;
 #include "transmission.glsl"
 #endif
 #include "texture_uv.glsl"
+#if defined(CLEARCOAT)
+#include "clearcoat.glsl"
+#endif
 #include "shading_models.glsl"
 #include "debug_views.glsl"
 
@@ -145,6 +149,9 @@ void main()
 #else
     const bool flip = false;
 #endif
+#if defined(CLEARCOAT)
+    vec3 geometricNormal = n; // the clearcoat layer's, unless it has a normal map of its own
+#endif
 #if defined(HAS_NORMAL_TEXTURE)
     vec3 t = vTangent.xyz - n * dot(n, vTangent.xyz);
     // A zero tangent (degenerate uv) would give NaN: fall back to the geometric normal.
@@ -185,6 +192,10 @@ void main()
     SurfaceBrdf surface = makeSurfaceBrdf(baseColor.rgb, metallic, perceptualRoughness, material.specular);
 
     float NoV = max(dot(n, v), 1e-4); // 1e-4: normal-mapped texels can face away from the viewer
+#if defined(CLEARCOAT)
+    ClearcoatLayer coat = makeClearcoat(geometricNormal, flip, v);
+    vec3 coatLight = vec3(0.0); // the layer's own reflection, added over the dimmed base
+#endif
 
 #if defined(IBL) || defined(ENERGY_COMPENSATION)
     // Split-sum DFG terms of this draw's own D, G and F (the renderer binds the table baked for
@@ -216,8 +227,16 @@ void main()
         GpuLight light = lightAt(index);
         vec3 illuminance = lightIlluminance(light, vWorldPosition, l);
         float NoL = dot(n, l);
+#if defined(CLEARCOAT)
+        // The layer's normal may face a light the base's does not, and the other way round.
+        if (NoL <= 0.0 && dot(coat.n, l) <= 0.0) continue;
+        illuminance *= shadowVisibility(light, vWorldPosition, n, l);
+        coatLight += clearcoatPunctual(coat, v, l) * illuminance;
+        if (NoL <= 0.0) continue;
+#else
         if (NoL <= 0.0) continue;
         illuminance *= shadowVisibility(light, vWorldPosition, n, l);
+#endif
         vec3 diffuse, specular;
         evaluateBrdfLobes(surface, n, v, l, diffuse, specular);
         diffuseLight += diffuse * illuminance * NoL;
@@ -247,6 +266,22 @@ void main()
 #endif
     diffuseLight += diffuseIbl * occlusion * environment.params.x;
     specularLight += specularIbl * specularAo * environment.params.x;
+#if defined(CLEARCOAT)
+    // The layer's lobe: its own prefiltered lookup along its own normal, at its roughness, and
+    // its own split-sum albedo (F0 0.04, F90 1) from the same table.
+#if defined(IBL_IMPORTANCE)
+    vec3 coatIbl = importanceSampledSpecular(coat.brdf, coat.n, v, coat.iblRoughness);
+#else
+    vec2 coatDfg = texture(uDfg, vec2(coat.NoV, coat.brdf.perceptualRoughness)).rg;
+#if defined(BRDF_F_NONE)
+    coatDfg = vec2(coatDfg.x + coatDfg.y, 0.0);
+#endif
+    vec3 coatR = reflect(-v, coat.n);
+    vec3 coatIbl = prefilteredRadiance(specularDominantDirection(coat.n, coatR, coat.iblRoughness), coat.iblRoughness) *
+                   (coat.brdf.f0 * coatDfg.x + coat.brdf.f90 * coatDfg.y);
+#endif
+    coatLight += coatIbl * coat.factor * specularOcclusion(coat.NoV, occlusion, coat.brdf.perceptualRoughness) * environment.params.x;
+#endif
 #endif
 
 #if defined(TRANSMISSION)
@@ -260,6 +295,12 @@ void main()
 #endif
 
     vec3 emissive = materialEmissive();
+#if defined(CLEARCOAT)
+    // The layer lies over everything below it, emission included (the extension's layering).
+    diffuseLight *= coat.attenuation;
+    specularLight = specularLight * coat.attenuation + coatLight;
+    emissive *= coat.attenuation;
+#endif
 #if defined(BLEND_TRANSPARENT)
     // Alpha is the opacity of the diffuse part only: reflection and emission stay whole, as a
     // clear glass keeps its highlights (Newell, Newell & Sancha 1972; Filament's "transparent").

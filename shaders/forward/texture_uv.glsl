@@ -6,6 +6,9 @@ const uint TEX_METALLIC_ROUGHNESS = 1u;
 const uint TEX_NORMAL = 2u;
 const uint TEX_OCCLUSION = 3u;
 const uint TEX_EMISSIVE = 4u;
+const uint TEX_CLEARCOAT = 5u;
+const uint TEX_CLEARCOAT_ROUGHNESS = 6u;
+const uint TEX_CLEARCOAT_NORMAL = 7u;
 
 // Texture coordinates of one texture: its uv set and KHR_texture_transform.
 vec2 textureUv(uint texture)

@@ -39,6 +39,9 @@
                                          // desktop driver has 32 (Renderer checks: gl::maxTextureUnits)
 #define SPECULA_UNIT_TRANSMISSION 17     // forward pass: the opaque frame and its mips (forward/transmission.glsl)
 #define SPECULA_UNIT_ENVIRONMENT_CUBE 18 // the environment cube, box-filtered mips (ibl/importance.glsl)
+#define SPECULA_UNIT_CLEARCOAT 19           // KHR_materials_clearcoat's three textures (forward pass)
+#define SPECULA_UNIT_CLEARCOAT_ROUGHNESS 20
+#define SPECULA_UNIT_CLEARCOAT_NORMAL 21
 #define SPECULA_UNIT_SSAO 12             // forward pass: the blurred ambient occlusion
 #define SPECULA_BINDING_SSAO 5           // uniform buffer: SsaoData
 #define SPECULA_BINDING_EXPOSURE_PARAMS 6 // uniform buffer: ExposureParams

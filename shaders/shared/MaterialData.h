@@ -20,6 +20,8 @@ SPECULA_SHARED_BEGIN
 #define SPECULA_MATERIAL_USE_VERTEX_COLOR 256u
 #define SPECULA_MATERIAL_BLEND_TRANSPARENT 512u // blended: specular and emission not scaled by alpha
 #define SPECULA_MATERIAL_TRANSMISSION 1024u     // KHR_materials_transmission factor above 0
+#define SPECULA_MATERIAL_CLEARCOAT 2048u        // KHR_materials_clearcoat factor above 0
+#define SPECULA_MATERIAL_HAS_CLEARCOAT_NORMAL_TEXTURE 4096u // read at run time by the CLEARCOAT variant
 
 struct GpuMaterial {
     vec4 baseColorFactor;
@@ -27,8 +29,9 @@ struct GpuMaterial {
     vec4 params;          // x metallic, y perceptual roughness, z normal scale, w occlusion strength
     vec4 alpha;           // x alpha cutoff
     uvec4 flags;          // x SPECULA_MATERIAL_* bits; y texCoord sets, 2 bits per texture
-                          // (base colour, metallic-roughness, normal, occlusion, emissive)
-    vec4 uvTransform[10]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
+                          // (base colour, metallic-roughness, normal, occlusion, emissive,
+                          // clearcoat, clearcoat roughness, clearcoat normal)
+    vec4 uvTransform[16]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
     vec4 specular;        // KHR_materials_specular: rgb specularColorFactor, a specularFactor; rgb also
                           // carries KHR_materials_ior: x (F0(ior) / 0.04), so 0.04 x rgb is the dielectric F0
     vec4 phong;           // Phong, Blinn-Phong, Gouraud, flat: rgb dielectric specular colour ks,
@@ -37,10 +40,12 @@ struct GpuMaterial {
                           // z KHR_materials_volume thickness (object-space metres, 0 = thin-walled),
                           // w attenuation distance (metres, 0 = infinite)
     vec4 attenuation;     // rgb KHR_materials_volume attenuation colour
+    vec4 clearcoat;       // KHR_materials_clearcoat: x clearcoatFactor, y clearcoatRoughnessFactor
+                          // (perceptual), z clearcoat normal texture scale
 };
 
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::GpuMaterial) == 19 * 16);
+static_assert(sizeof(specula::shared::GpuMaterial) == 26 * 16);
 #endif

@@ -92,11 +92,15 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
         }
         state.apply(pipeline);
         if (options.textures == MaterialTextures::All) {
-            for (size_t slot = 0; slot < size_t(TextureSlot::Count); ++slot) {
+            // The clearcoat slots only for the variant that samples them.
+            const size_t slots = m.clearcoat ? size_t(TextureSlot::Count) : size_t(TextureSlot::Clearcoat);
+            for (size_t slot = 0; slot < slots; ++slot) {
                 const gl::Texture* texture = m.textures[slot];
-                if (!texture) texture = slot == size_t(TextureSlot::Normal) ? options.flatNormal : options.white;
-                state.bindTexture(int(slot), *texture);
-                state.bindSampler(int(slot), m.samplers[slot]);
+                const bool normal = slot == size_t(TextureSlot::Normal) || slot == size_t(TextureSlot::ClearcoatNormal);
+                if (!texture) texture = normal ? options.flatNormal : options.white;
+                const int unit = textureUnit(TextureSlot(slot));
+                state.bindTexture(unit, *texture);
+                state.bindSampler(unit, m.samplers[slot]);
             }
         } else if (m.features & SPECULA_MATERIAL_ALPHA_MASK) {
             const size_t slot = size_t(TextureSlot::BaseColor);

@@ -95,6 +95,16 @@ const scene::LodChain& lodChain(LodChains& chains, const scene::Primitive& p)
 
 } // namespace
 
+int textureUnit(TextureSlot slot)
+{
+    switch (slot) {
+    case TextureSlot::Clearcoat: return SPECULA_UNIT_CLEARCOAT;
+    case TextureSlot::ClearcoatRoughness: return SPECULA_UNIT_CLEARCOAT_ROUGHNESS;
+    case TextureSlot::ClearcoatNormal: return SPECULA_UNIT_CLEARCOAT_NORMAL;
+    default: return int(slot);
+    }
+}
+
 const gl::Sampler* GpuScene::sampler(const scene::Scene&, int index)
 {
     if (index < 0 || size_t(index) >= mSamplers.size()) return &mDefaultSampler;
@@ -165,9 +175,10 @@ GpuScene::GpuScene(const scene::Scene& scene)
         if (m.ior) gpu.specular = glm::vec4(m.specularColorFactor * (scene::f0FromIor(*m.ior) / 0.04f), m.specularFactor);
         gpu.transmission = glm::vec4(m.transmissionFactor, m.ior.value_or(1.5f), m.thickness, m.attenuationDistance);
         gpu.attenuation = glm::vec4(m.attenuationColor, 0.0f);
+        gpu.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughnessFactor, m.clearcoatNormalScale, 0.0f);
         // Classic models' specular colour: mid grey, a plastic highlight (Phong 1975's ks).
         gpu.phong = glm::vec4(glm::vec3(0.5f), m.shininess);
-        for (int slot = 0; slot < 5; ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
+        for (int slot = 0; slot < int(TextureSlot::Count); ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
 
         MaterialBinding binding;
         binding.alphaMode = m.alphaMode;
@@ -184,6 +195,11 @@ GpuScene::GpuScene(const scene::Scene& scene)
             {m.normalTexture, TextureSlot::Normal, false, SPECULA_MATERIAL_HAS_NORMAL_TEXTURE},
             {m.occlusionTexture, TextureSlot::Occlusion, false, SPECULA_MATERIAL_HAS_OCCLUSION_TEXTURE},
             {m.emissiveTexture, TextureSlot::Emissive, true, SPECULA_MATERIAL_HAS_EMISSIVE_TEXTURE},
+            // Read only by the CLEARCOAT variant, which samples the first two always (white
+            // without one) and the normal map where the record's flag says there is one.
+            {m.clearcoatTexture, TextureSlot::Clearcoat, false, 0u},
+            {m.clearcoatRoughnessTexture, TextureSlot::ClearcoatRoughness, false, 0u},
+            {m.clearcoatNormalTexture, TextureSlot::ClearcoatNormal, false, SPECULA_MATERIAL_HAS_CLEARCOAT_NORMAL_TEXTURE},
         };
         for (const auto& s : slots) {
             if (!s.ref.valid()) continue;
@@ -200,6 +216,9 @@ GpuScene::GpuScene(const scene::Scene& scene)
         if (m.alphaMode == scene::AlphaMode::Blend && m.blendMode == scene::BlendMode::Transparent)
             gpu.flags.x |= SPECULA_MATERIAL_BLEND_TRANSPARENT;
         if (m.transmissionFactor > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_TRANSMISSION;
+        // A zero factor is no layer at all (the texture only scales the factor): no variant for it.
+        binding.clearcoat = m.clearcoatFactor > 0.0f;
+        if (binding.clearcoat) gpu.flags.x |= SPECULA_MATERIAL_CLEARCOAT;
         // The shading model and BRDF terms select the variant too (not read by the shaders).
         binding.features = gpu.flags.x | packShading(m.shading);
         gpuMaterials.push_back(gpu);
@@ -393,6 +412,19 @@ void GpuScene::setBlendMode(int material, scene::BlendMode mode)
         // The record's flags say the same (the shader reads the variant, tools read the record).
         mRecords[record].flags.x = (mRecords[record].flags.x & ~uint32_t(SPECULA_MATERIAL_BLEND_TRANSPARENT)) |
                                    (features & SPECULA_MATERIAL_BLEND_TRANSPARENT);
+        mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
+                               &mRecords[record].flags.x);
+    }
+}
+
+void GpuScene::setClearcoat(int material, bool on)
+{
+    for (size_t record = 0; record < mMaterials.size(); ++record) {
+        if (mRecordMaterial[record] != material) continue;
+        MaterialBinding& binding = mMaterials[record];
+        binding.clearcoat = on;
+        binding.features = on ? binding.features | SPECULA_MATERIAL_CLEARCOAT : binding.features & ~uint32_t(SPECULA_MATERIAL_CLEARCOAT);
+        mRecords[record].flags.x = (mRecords[record].flags.x & ~uint32_t(SPECULA_MATERIAL_CLEARCOAT)) | (binding.features & SPECULA_MATERIAL_CLEARCOAT);
         mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
                                &mRecords[record].flags.x);
     }

@@ -26,7 +26,13 @@ struct GpuPrimitive {
     scene::Bounds bounds; ///< object space
 };
 
-enum class TextureSlot { BaseColor, MetallicRoughness, Normal, Occlusion, Emissive, Count };
+enum class TextureSlot {
+    BaseColor, MetallicRoughness, Normal, Occlusion, Emissive,
+    Clearcoat, ClearcoatRoughness, ClearcoatNormal, ///< KHR_materials_clearcoat (CLEARCOAT variant only)
+    Count
+};
+/// The texture unit of each slot (shaders/shared/Bindings.h): the first five are units 0-4.
+int textureUnit(TextureSlot slot);
 
 struct MaterialBinding {
     std::array<const gl::Texture*, size_t(TextureSlot::Count)> textures{};
@@ -34,6 +40,7 @@ struct MaterialBinding {
     scene::AlphaMode alphaMode = scene::AlphaMode::Opaque;
     bool doubleSided = false;
     float transmission = 0.0f; ///< KHR_materials_transmission factor
+    bool clearcoat = false;    ///< KHR_materials_clearcoat: the CLEARCOAT variant, whose units 19-21 are bound
     uint32_t features = 0; ///< SPECULA_MATERIAL_* bits: selects the shader variant
 };
 
@@ -77,6 +84,9 @@ public:
     void setShading(int material, const scene::MaterialShading& shading);
     /// Sets or clears SPECULA_MATERIAL_BLEND_TRANSPARENT of a blended material (and its copies).
     void setBlendMode(int material, scene::BlendMode mode);
+    /// Sets or clears SPECULA_MATERIAL_CLEARCOAT of `material` (and its copies): a layer of factor
+    /// 0 is no layer, so its variant goes.
+    void setClearcoat(int material, bool on);
     /// Writes `size` bytes at `offset` within `material`'s record (and its copies'), in the
     /// CPU copy and in the buffer: no other byte of the buffer is written.
     void writeMaterial(int material, size_t offset, size_t size, const void* data);

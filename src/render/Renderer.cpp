@@ -203,11 +203,12 @@ struct Renderer::Impl {
 
 Renderer::Renderer() : mImpl(std::make_unique<Impl>())
 {
-    // The forward pass binds units up to SPECULA_UNIT_ENVIRONMENT_CUBE (shaders/shared/Bindings.h).
-    static_assert(SPECULA_UNIT_ENVIRONMENT_CUBE > SPECULA_UNIT_TRANSMISSION && SPECULA_UNIT_TRANSMISSION > SPECULA_UNIT_IRRADIANCE);
-    if (gl::maxTextureUnits() <= SPECULA_UNIT_ENVIRONMENT_CUBE)
+    // The forward pass binds units up to SPECULA_UNIT_CLEARCOAT_NORMAL (shaders/shared/Bindings.h).
+    static_assert(SPECULA_UNIT_CLEARCOAT_NORMAL > SPECULA_UNIT_ENVIRONMENT_CUBE && SPECULA_UNIT_ENVIRONMENT_CUBE > SPECULA_UNIT_TRANSMISSION &&
+                  SPECULA_UNIT_TRANSMISSION > SPECULA_UNIT_IRRADIANCE);
+    if (gl::maxTextureUnits() <= SPECULA_UNIT_CLEARCOAT_NORMAL)
         throw Error("this OpenGL implementation has {} texture units; Specula needs {}", gl::maxTextureUnits(),
-                    SPECULA_UNIT_ENVIRONMENT_CUBE + 1);
+                    SPECULA_UNIT_CLEARCOAT_NORMAL + 1);
 }
 Renderer::~Renderer() = default;
 
@@ -436,8 +437,8 @@ scene::MaterialShading Renderer::materialShading(int material) const
 
 std::array<uint32_t, 5> Renderer::materialTextureNames(int material) const
 {
-    static_assert(size_t(TextureSlot::Count) == 5);
-    std::array<uint32_t, 5> names{};
+    std::array<uint32_t, 5> names{}; // the core material's five textures
+    static_assert(size_t(TextureSlot::Emissive) == 4);
     if (material < 0 || material >= materialCount()) return names;
     const MaterialBinding& binding = mImpl->stores.scene->materials()[size_t(material)];
     for (size_t i = 0; i < names.size(); ++i) names[i] = binding.textures[i] ? binding.textures[i]->id() : 0u;
@@ -493,6 +494,8 @@ glm::vec4 Renderer::materialParameter(int material, MaterialParameter parameter)
     case MaterialParameter::SpecularColor: return glm::vec4(glm::vec3(r.specular), 0.0f);
     case MaterialParameter::SpecularFactor: return glm::vec4(r.specular.w, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::SectorLight: return glm::vec4(r.emissive.w * 255.0f, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::ClearcoatFactor: return glm::vec4(r.clearcoat.x, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::ClearcoatRoughness: return glm::vec4(r.clearcoat.y, 0.0f, 0.0f, 0.0f);
     }
     return glm::vec4(0.0f);
 }
@@ -536,6 +539,17 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
         // The record holds level / 255 (GpuScene); the shader scales it back.
         const glm::vec4 v(std::clamp(value.x, 0.0f, 255.0f) / 255.0f);
         gpu.writeMaterial(material, offsetof(GpuMaterial, emissive) + 3 * sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::ClearcoatFactor: {
+        const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, clearcoat), sizeof(float), &v.x);
+        gpu.setClearcoat(material, v.x > 0.0f);
+        break;
+    }
+    case MaterialParameter::ClearcoatRoughness: {
+        const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, clearcoat) + sizeof(float), sizeof(float), &v.x);
         break;
     }
     }

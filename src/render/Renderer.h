@@ -42,8 +42,10 @@ enum class MaterialParameter {
     SpecularColor,
     SpecularFactor, ///< x, KHR_materials_specular factor (dielectric F0 and F90)
     SectorLight,    ///< x, the Doom model's sector light level, 0–255
+    ClearcoatFactor,    ///< x, KHR_materials_clearcoat factor (0 = no layer: the CLEARCOAT variant goes)
+    ClearcoatRoughness, ///< x, the layer's perceptual roughness
 };
-constexpr int kMaterialParameterCount = int(MaterialParameter::SectorLight) + 1;
+constexpr int kMaterialParameterCount = int(MaterialParameter::ClearcoatRoughness) + 1;
 
 /// How the specular lobe integrates image-based light (docs/ibl.md).
 enum class IblSpecular {

@@ -162,6 +162,8 @@ private:
     void convertImages();
     static Wrap wrap(int mode);
     void convertSamplers();
+    /// The textureInfo `name` of a material extension's JSON object (none when absent).
+    TextureRef extensionTexture(const tinygltf::Value& extension, const char* name, std::string_view where);
     TextureRef textureRef(int textureIndex, int texCoord, const tinygltf::ExtensionMap& extensions,
                           std::string_view where);
 

@@ -232,6 +232,19 @@ TextureRef Importer::textureRef(int textureIndex, int texCoord, const tinygltf::
     return ref;
 }
 
+TextureRef Importer::extensionTexture(const tinygltf::Value& extension, const char* name, std::string_view where)
+{
+    // A textureInfo inside a material extension: tinygltf leaves it as JSON.
+    const tinygltf::Value* info = member(extension, name);
+    if (!info || !info->IsObject()) return {};
+    const auto index = integer(*info, "index");
+    if (!index) return {};
+    tinygltf::ExtensionMap extensions;
+    if (const tinygltf::Value* ext = member(*info, "extensions"); ext && ext->IsObject())
+        for (const std::string& key : ext->Keys()) extensions[key] = ext->Get(key);
+    return textureRef(*index, integer(*info, "texCoord").value_or(0), extensions, fmt::format("{} {}", where, name));
+}
+
 void Importer::convertMaterials()
 {
     for (size_t i = 0; i < mModel.materials.size(); ++i) {
@@ -301,6 +314,17 @@ void Importer::convertMaterials()
                                                source.occlusionTexture.extensions, where + " occlusionTexture");
         material.emissiveTexture = textureRef(source.emissiveTexture.index, source.emissiveTexture.texCoord,
                                               source.emissiveTexture.extensions, where + " emissiveTexture");
+        // KHR_materials_clearcoat: factors, their textures and the layer's normal map.
+        if (const tinygltf::Value* clearcoat = extension(source.extensions, "KHR_materials_clearcoat")) {
+            material.clearcoatFactor = float(std::clamp(number(*clearcoat, "clearcoatFactor").value_or(0.0), 0.0, 1.0));
+            material.clearcoatRoughnessFactor =
+                float(std::clamp(number(*clearcoat, "clearcoatRoughnessFactor").value_or(0.0), 0.0, 1.0));
+            material.clearcoatTexture = extensionTexture(*clearcoat, "clearcoatTexture", where);
+            material.clearcoatRoughnessTexture = extensionTexture(*clearcoat, "clearcoatRoughnessTexture", where);
+            material.clearcoatNormalTexture = extensionTexture(*clearcoat, "clearcoatNormalTexture", where);
+            if (const tinygltf::Value* normal = member(*clearcoat, "clearcoatNormalTexture"))
+                material.clearcoatNormalScale = float(number(*normal, "scale").value_or(1.0));
+        }
         // KHR_materials_unlit: colour = the base colour term (factor × texture × vertex colour),
         // whatever the lights and the environment. The other PBR properties are only the fallback
         // of viewers without the extension (kept for --shading pbr), but emission is no part of

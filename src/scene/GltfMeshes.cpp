@@ -320,7 +320,9 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
         primitive.hasTangents = false;
     }
     if (!primitive.hasTangents && primitive.material >= 0) {
-        const TextureRef& normalTexture = mScene.materials[size_t(primitive.material)].normalTexture;
+        // The clearcoat layer's normal map needs the tangent frame too.
+        const Material& material = mScene.materials[size_t(primitive.material)];
+        const TextureRef& normalTexture = material.normalTexture.valid() ? material.normalTexture : material.clearcoatNormalTexture;
         if (normalTexture.valid()) generateTangents(primitive, normalTexture.texCoord);
     }
     return primitive;

@@ -99,6 +99,15 @@ struct Material {
     TextureRef normalTexture;
     TextureRef occlusionTexture;         ///< R
     TextureRef emissiveTexture;          ///< sRGB
+    /// KHR_materials_clearcoat: a GGX dielectric layer (F0 0.04, ior 1.5) over the material,
+    /// with its own roughness and normal (0 = no layer). The layer's strength is the factor x
+    /// clearcoatTexture's R, its perceptual roughness the factor x clearcoatRoughnessTexture's G.
+    float clearcoatFactor = 0.0f;
+    float clearcoatRoughnessFactor = 0.0f;
+    float clearcoatNormalScale = 1.0f;
+    TextureRef clearcoatTexture;          ///< R
+    TextureRef clearcoatRoughnessTexture; ///< G
+    TextureRef clearcoatNormalTexture;    ///< tangent space, as normalTexture
     /// Shading model and BRDF terms (scene files); unset ones come from the frame.
     MaterialShading shading;
     /// Index of refraction of the dielectric part (KHR_materials_ior): F0 = ((ior − 1)/(ior + 1))²

@@ -76,7 +76,8 @@ const std::vector<std::string_view> kMaterialKeys = {"name", "baseColor", "metal
                                                      "emissiveStrength", "doubleSided", "alphaMode", "alphaCutoff", "blendMode",
                                                      "shading", "brdfD", "brdfG", "brdfF", "brdfDiffuse", "ior",
                                                      "shininess", "sectorLight", "transmission", "thickness",
-                                                     "attenuationDistance", "attenuationColor"};
+                                                     "attenuationDistance", "attenuationColor", "clearcoat",
+                                                     "clearcoatRoughness"};
 
 /// Sets the material's fields that `object` gives; the others keep their values (a shape's
 /// defaults, or a glTF model's material with its textures).
@@ -108,6 +109,9 @@ void applyMaterialKeys(const Object& object, Material& material)
         if (glm::any(glm::greaterThan(*color, glm::vec3(1.0f)))) object.fail("attenuationColor", "must be between 0 and 1");
         material.attenuationColor = *color;
     }
+    // KHR_materials_clearcoat's factors (a glTF model's clearcoat textures stay).
+    material.clearcoatFactor = object.unitInterval("clearcoat").value_or(material.clearcoatFactor);
+    material.clearcoatRoughnessFactor = object.unitInterval("clearcoatRoughness").value_or(material.clearcoatRoughnessFactor);
     // Material system (docs/scene-format.md): shading model, BRDF terms, F0 from an IOR, Phong exponent.
     if (const auto v = object.choice("shading", {"pbr", "unlit", "flat", "gouraud", "phong", "blinn-phong", "doom"}))
         material.shading.model = parseShadingModel(*v);

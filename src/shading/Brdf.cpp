@@ -191,6 +191,14 @@ void evaluateLobes(const Surface& s, const dvec3& n, const dvec3& v, const dvec3
     const double Fd = diffuseLobe(s.diffuse, r, NoV, NoL, VoH, glm::dot(v, l));
     diffuse = (dvec3(1.0) - F) * diffuseColor * Fd;
     specular = F * (D * V);
+    if (s.clearcoat > 0.0) {
+        const double rc = std::clamp(s.clearcoatRoughness, kMinPerceptualRoughness, 1.0);
+        const double Vc = s.imageBased ? visibilityImageBased(s.geometry, NoV, NoL, NoH, VoH, rc)
+                                       : visibility(s.geometry, NoV, NoL, NoH, VoH, rc);
+        const dvec3 attenuation = dvec3(1.0) - s.clearcoat * fresnel(s.fresnel, dvec3(0.04), 1.0, NoV);
+        diffuse *= attenuation;
+        specular = specular * attenuation + s.clearcoat * fresnel(s.fresnel, dvec3(0.04), 1.0, VoH) * (distribution(s.distribution, NoH, rc * rc) * Vc);
+    }
 }
 
 dvec3 evaluateClassic(const dvec3& kd, const dvec3& ks, double shininess, bool blinn, const dvec3& n, const dvec3& v,

@@ -57,6 +57,11 @@ struct Surface {
     /// The BRDF as image-based light sees it: visibilityImageBased instead of visibility.
     bool imageBased = false;
     dvec3 specularColor{1.0};    ///< KHR_materials_specular colour: dielectric F0 = min(f0Dielectric × it, 1) × specularFactor
+    /// KHR_materials_clearcoat (shaders/forward/clearcoat.glsl) with the layer's normal = n: the
+    /// lobes are dimmed by 1 − clearcoat Fc(n·v) and the layer's F D V × clearcoat is added to
+    /// the specular lobe (F0 0.04, F90 1, the same D, V and F terms).
+    double clearcoat = 0.0;
+    double clearcoatRoughness = 0.0; ///< perceptual, clamped like perceptualRoughness
 };
 
 /// f(l, v) (1/sr) for unit n, v, l, not multiplied by NoL. Zero when NoL <= 0.

@@ -48,6 +48,8 @@ BrdfCurves sampleBrdfCurves(const BrdfPlotMaterial& m, const ResolvedShading& sh
     surface.geometry = shading.geometry;
     surface.fresnel = shading.fresnel;
     surface.diffuse = shading.diffuse;
+    surface.clearcoat = std::clamp(m.clearcoat, 0.0, 1.0);
+    surface.clearcoatRoughness = m.clearcoatRoughness;
     // The same F0 and F90 as brdf::evaluate and makeSurfaceBrdf in shaders/brdf/brdf.glsl.
     const glm::dvec3 f0 = glm::mix(glm::min(0.04 * m.specularColor, glm::dvec3(1.0)) * m.specularFactor, m.baseColor, metallic);
     const double f90 = m.specularFactor + (1.0 - m.specularFactor) * metallic;

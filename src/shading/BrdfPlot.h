@@ -22,6 +22,8 @@ struct BrdfPlotMaterial {
     double specularFactor = 1.0;
     glm::dvec3 phongSpecular{0.5}; ///< ks of the classic models, for dielectrics
     double shininess = 0.0;        ///< classic exponent; 0 = from roughness (brdf::classicShininess)
+    double clearcoat = 0.0;        ///< KHR_materials_clearcoat factor (0 = no layer)
+    double clearcoatRoughness = 0.0;
 };
 
 /// What the curves show for a shading model.

@@ -21,6 +21,7 @@ constexpr uint64_t kShadowDirectional = uint64_t(1) << 32, kShadowSpot = uint64_
 constexpr int kShadowFilterShift = 35, kShadowTapsShift = 37;
 // Material features above the first nine bits, and the transparency choices.
 constexpr uint64_t kBlendTransparent = uint64_t(1) << 39, kTransmission = uint64_t(1) << 40, kOit = uint64_t(1) << 41;
+constexpr uint64_t kClearcoat = uint64_t(1) << 42;
 constexpr int kDebugShift = 16, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
               kDiffuseShift = 30;
 constexpr uint64_t field(int shift, int bits) { return ((uint64_t(1) << bits) - 1) << shift; }
@@ -92,6 +93,7 @@ constexpr std::array kTable = {
     VariantDefine{SPECULA_MATERIAL_USE_VERTEX_COLOR, SPECULA_MATERIAL_USE_VERTEX_COLOR, "VERTEX_COLOR", K::MaterialFeature},
     VariantDefine{kBlendTransparent, kBlendTransparent, "BLEND_TRANSPARENT", K::MaterialFeature},
     VariantDefine{kTransmission, kTransmission, "TRANSMISSION", K::MaterialFeature},
+    VariantDefine{kClearcoat, kClearcoat, "CLEARCOAT", K::MaterialFeature},
     VariantDefine{kOit, kOit, "OIT", K::FrameFeature},
 };
 static_assert((kFeatureMask & (kIbl | kIblImportance | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
@@ -124,6 +126,8 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
         // through; a Doom frame's indices and the debug views have neither.
         if (features & SPECULA_MATERIAL_BLEND_TRANSPARENT) key |= kBlendTransparent;
         if ((features & SPECULA_MATERIAL_TRANSMISSION) && !doomIndexed && !isMaterialDebugView(debugView)) key |= kTransmission;
+        // KHR_materials_clearcoat: the layer, in the lit frame only.
+        if ((features & SPECULA_MATERIAL_CLEARCOAT) && !doomIndexed && !isMaterialDebugView(debugView)) key |= kClearcoat;
     }
     // OIT's accumulation is for the blended list only (transmissive draws, blended or not, are
     // drawn sorted before it), and never in an indexed frame.

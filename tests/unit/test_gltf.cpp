@@ -1500,3 +1500,68 @@ TEST(GltfModels, TransmissionAndVolume)
     const Scene blend = loadGltf(kModels / "AlphaBlendModeTest/AlphaBlendModeTest.glb");
     EXPECT_EQ(blend.materials[1].blendMode, BlendMode::Fade);
 }
+
+// tests/assets/gltf/clearcoat_quad.gltf (make_clearcoat.py; the Khronos validator: 0 errors,
+// 0 warnings): every KHR_materials_clearcoat field and texture, no warning for the extension.
+TEST(GltfExtensions, ClearcoatFieldsAndTextures)
+{
+    const Scene scene = loadGltf(kTestAssets / "clearcoat_quad.gltf");
+    EXPECT_TRUE(scene.warnings.empty());
+    ASSERT_EQ(scene.materials.size(), 1u);
+    const Material& m = scene.materials[0];
+    EXPECT_FLOAT_EQ(m.clearcoatFactor, 1.0f);
+    EXPECT_FLOAT_EQ(m.clearcoatRoughnessFactor, 0.5f);
+    EXPECT_FLOAT_EQ(m.clearcoatNormalScale, 0.8f);
+    ASSERT_TRUE(m.clearcoatTexture.valid());
+    ASSERT_TRUE(m.clearcoatRoughnessTexture.valid());
+    ASSERT_TRUE(m.clearcoatNormalTexture.valid());
+    // Factor and roughness share image 0 (R and G); the normal map is image 1.
+    EXPECT_EQ(m.clearcoatTexture.image, 0);
+    EXPECT_EQ(m.clearcoatRoughnessTexture.image, 0);
+    EXPECT_EQ(m.clearcoatNormalTexture.image, 1);
+    EXPECT_EQ(m.clearcoatTexture.sampler, 0);
+    const Image& coat = scene.images.at(0);
+    ASSERT_EQ(coat.pixels.size(), 4u);
+    EXPECT_EQ(coat.pixels[0], 204);
+    EXPECT_EQ(coat.pixels[1], 128);
+    EXPECT_EQ(scene.images.at(1).pixels[0], 171);
+    EXPECT_FALSE(m.normalTexture.valid());
+}
+
+TEST(GltfExtensions, ClearcoatDefaultsTexCoordAndTransform)
+{
+    // Defaults of the extension (factor 0, roughness 0, scale 1), a texture's texCoord and its
+    // KHR_texture_transform inside the extension; a clearcoat normal map alone makes tangents.
+    TempDir dir;
+    GltfBuilder b;
+    auto& p = b.primitive({{"POSITION", b.vec3(kTriangle)}, {"NORMAL", b.vec3({0, 0, 1, 0, 0, 1, 0, 0, 1})},
+                           {"TEXCOORD_0", b.vec2({0, 0, 1, 0, 0, 1})}});
+    p["material"] = 1; // the coated one: its clearcoat normal map alone asks for tangents
+    b.doc["images"] = {{{"uri", "coat.png"}}};
+    b.doc["textures"] = {{{"source", 0}}};
+    b.doc["materials"] = {
+        {{"extensions", {{"KHR_materials_clearcoat", json::object()}}}},
+        {{"extensions",
+          {{"KHR_materials_clearcoat",
+            {{"clearcoatFactor", 0.7},
+             {"clearcoatTexture", {{"index", 0}, {"texCoord", 1}}},
+             {"clearcoatNormalTexture",
+              {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"offset", {0.25, 0.5}}, {"scale", {2, 2}}}}}}}}}}}}}};
+    b.doc["extensionsUsed"] = json::array({"KHR_materials_clearcoat", "KHR_texture_transform"});
+    b.doc["extensionsRequired"] = json::array({"KHR_materials_clearcoat"});
+    const std::vector<uint8_t> png = makePng(1, 1, {255, 128, 255}, false);
+    dir.write("coat.png", std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+    const Scene scene = loadGltf(b.write(dir, "coat.gltf"));
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    const Material& plain = scene.materials.at(0);
+    EXPECT_EQ(plain.clearcoatFactor, 0.0f);
+    EXPECT_EQ(plain.clearcoatRoughnessFactor, 0.0f);
+    EXPECT_EQ(plain.clearcoatNormalScale, 1.0f);
+    EXPECT_FALSE(plain.clearcoatTexture.valid());
+    const Material& coated = scene.materials.at(1);
+    EXPECT_FLOAT_EQ(coated.clearcoatFactor, 0.7f);
+    EXPECT_EQ(coated.clearcoatTexture.texCoord, 1);
+    EXPECT_EQ(coated.clearcoatNormalTexture.transform.offset, glm::vec2(0.25f, 0.5f));
+    EXPECT_EQ(coated.clearcoatNormalTexture.transform.scale, glm::vec2(2.0f));
+    EXPECT_TRUE(scene.meshes.at(0).primitives.at(0).hasTangents);
+}

@@ -133,6 +133,24 @@ TEST(SceneFileMaterials, BlendModeAndTransmission)
     EXPECT_NE(test::sceneError(R"({"render": {"transparency": "depth-peeling"}})").find("transparency"), std::string::npos);
 }
 
+// KHR_materials_clearcoat's factors in a scene file (docs/scene-format.md), on a shape and on a
+// glTF model's material (its textures stay), and their range errors.
+TEST(SceneFileMaterials, Clearcoat)
+{
+    const SceneDocument d = test::loadSceneText(R"({"shapes": [
+        {"type": "sphere", "material": {"clearcoat": 0.75, "clearcoatRoughness": 0.2}},
+        {"type": "sphere", "material": {}}]})");
+    ASSERT_EQ(d.scene.materials.size(), 2u);
+    EXPECT_FLOAT_EQ(d.scene.materials[0].clearcoatFactor, 0.75f);
+    EXPECT_FLOAT_EQ(d.scene.materials[0].clearcoatRoughnessFactor, 0.2f);
+    EXPECT_EQ(d.scene.materials[1].clearcoatFactor, 0.0f); // no layer by default
+    auto error = [](const std::string& material) {
+        return test::sceneError(R"({"shapes": [{"type": "sphere", "material": )" + material + "}]}");
+    };
+    EXPECT_NE(error(R"({"clearcoat": 1.5})").find("clearcoat"), std::string::npos);
+    EXPECT_NE(error(R"({"clearcoatRoughness": -0.1})").find("clearcoatRoughness"), std::string::npos);
+}
+
 // The transmission golden's scene file (tests/assets/transparency/transmission.json) loads.
 TEST(SceneFileMaterials, TransmissionSceneLoads)
 {
