@@ -105,6 +105,38 @@ int textureUnit(TextureSlot slot)
     }
 }
 
+void GpuScene::buildLevelsOfDetail()
+{
+    if (mLevelsOfDetail) return;
+    mLevelsOfDetail = true;
+    // From the GPU's own copies (the scene need not outlive its upload): each primitive's
+    // vertices and indices read back once, simplified, and its index buffer replaced by the
+    // chain (level 0 first, the same indices). Identical meshes are simplified once.
+    LodChains chains;
+    std::vector<scene::Primitive> sources; // kept alive: the cache compares against them
+    sources.reserve(mPrimitives.size());
+    for (GpuPrimitive& gpu : mPrimitives) {
+        const size_t triangles = gpu.count / 3;
+        if (triangles < scene::kLodMinTriangles) continue;
+        scene::Primitive& p = sources.emplace_back();
+        const std::vector<std::byte> vertices = gpu.vertices.read(0, gpu.vertices.size());
+        p.vertices.resize(vertices.size() / sizeof(scene::Vertex));
+        std::memcpy(p.vertices.data(), vertices.data(), p.vertices.size() * sizeof(scene::Vertex));
+        if (gpu.indexed) {
+            const std::vector<std::byte> indices = gpu.indices.read(0, size_t(gpu.count) * sizeof(uint32_t));
+            p.indices.resize(gpu.count);
+            std::memcpy(p.indices.data(), indices.data(), indices.size());
+        }
+        const scene::LodChain& chain = lodChain(chains, p);
+        if (chain.levels.size() < 2) continue;
+        gpu.indices = gl::Buffer(chain.indices.size() * sizeof(uint32_t), chain.indices.data(), gpu.name + " indices (levels of detail)");
+        gpu.indexed = true;
+        gpu.count = chain.levels[0].count;
+        gpu.lods = chain.levels;
+        gpu.vertexArray.indexBuffer(gpu.indices);
+    }
+}
+
 const gl::Sampler* GpuScene::sampler(const scene::Scene&, int index)
 {
     if (index < 0 || size_t(index) >= mSamplers.size()) return &mDefaultSampler;
@@ -228,17 +260,13 @@ GpuScene::GpuScene(const scene::Scene& scene)
     const int defaultMaterial = int(materials.size() - 1);
 
     // Primitives, mesh by mesh.
-    LodChains lodChains;
     auto upload = [&](const scene::Primitive& p, const std::string& name) {
         GpuPrimitive gpu;
+        gpu.name = name;
         gpu.vertices = gl::Buffer(p.vertices.size() * sizeof(scene::Vertex), p.vertices.data(), name + " vertices");
-        // Levels of detail: one index list, level 0 the primitive's own indices. Identical
-        // meshes (a scene's repeated shapes, a deformed draw's own copy) are simplified once.
-        const scene::LodChain& chain = lodChain(lodChains, p);
-        gpu.indexed = !p.indices.empty() || chain.levels.size() > 1;
-        gpu.count = uint32_t(gpu.indexed ? chain.levels[0].count : p.vertices.size());
-        gpu.lods = chain.levels;
-        if (gpu.indexed) gpu.indices = gl::Buffer(chain.indices.size() * sizeof(uint32_t), chain.indices.data(), name + " indices");
+        gpu.indexed = !p.indices.empty();
+        gpu.count = uint32_t(gpu.indexed ? p.indices.size() : p.vertices.size());
+        if (gpu.indexed) gpu.indices = gl::Buffer(p.indices.size() * sizeof(uint32_t), p.indices.data(), name + " indices");
         gpu.material = p.material >= 0 && p.material < defaultMaterial ? p.material : defaultMaterial;
         gpu.bounds = p.bounds;
         gpu.vertexArray = gl::VertexArray(name);

@@ -1,6 +1,7 @@
 #pragma once
 // A scene's meshes, textures and materials uploaded to the GPU, and its draw list.
 #include <array>
+#include <string>
 #include <optional>
 #include <vector>
 
@@ -19,9 +20,10 @@ struct GpuPrimitive {
     gl::VertexArray vertexArray;
     uint32_t count = 0;   ///< indices, or vertices when not indexed (level 0)
     bool indexed = false;
-    /// Levels of detail (scene/MeshLod.h) in `indices`: level 0 is the primitive itself; a
-    /// primitive too small for coarser levels has only that one.
+    /// Levels of detail (scene/MeshLod.h) in `indices`, once GpuScene::buildLevelsOfDetail has
+    /// made them: level 0 is the primitive itself; empty: only that one.
     std::vector<scene::LodLevel> lods;
+    std::string name; ///< the mesh's, for labels
     int material = 0;     ///< index into GpuScene::materials (the default material is last)
     scene::Bounds bounds; ///< object space
 };
@@ -91,6 +93,11 @@ public:
     /// CPU copy and in the buffer: no other byte of the buffer is written.
     void writeMaterial(int material, size_t offset, size_t size, const void* data);
     size_t textureBytes() const { return mTextureBytes; }
+    /// Makes every large primitive's levels of detail (scene/MeshLod.h), once: a frame that asks
+    /// for them (FrameSettings::lodPixels > 0) pays the simplification, a scene that never does
+    /// pays nothing at load.
+    void buildLevelsOfDetail();
+    bool hasLevelsOfDetail() const { return mLevelsOfDetail; }
 
     /// The scene moves: it has animations, or skinned or morphed meshes (whose vertices are
     /// deformed on the CPU into a vertex buffer of each such draw, so that every pass, the
@@ -138,6 +145,7 @@ private:
     size_t mTriangles = 0;
     scene::Bounds mBounds, mCasterBounds;
     size_t mTextureBytes = 0;
+    bool mLevelsOfDetail = false;
 };
 
 } // namespace specula::render

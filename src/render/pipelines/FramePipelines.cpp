@@ -1,6 +1,7 @@
 #include "render/pipelines/FramePipelines.h"
 
 #include "render/FrameContext.h"
+#include "render/GpuScene.h"
 #include "render/passes/ResolvePass.h"
 
 namespace specula::render {
@@ -122,6 +123,8 @@ void buildFrame(Frame& f, FramePasses& passes, const FrameContext& frame)
     // Shadows first: whether any light has a map picks the forward programs.
     f.outputs.shadows = passes.shadows.addTo(f.graph, frame);
     passes.forward.prepareMaterials(frame, passes.shadows.variant(), everyLight);
+    if (frame.settings.lodPixels > 0.0f && frame.stores.scene && !frame.stores.scene->hasLevelsOfDetail())
+        frame.stores.scene->buildLevelsOfDetail();
     f.lists = passes.forward.drawLists(frame);
     if (isDoomFrame(frame.settings)) {
         buildDoom(f, passes, frame);
