@@ -5,6 +5,7 @@
 // Punctual light on spheres (factors) and on a glTF quad whose factor, roughness and normal
 // come from textures; the white furnace for the image-based path.
 #include "GlTestContext.h"
+#include "ImageProbe.h"
 #include "SphereTiles.h"
 
 #include <algorithm>
@@ -24,6 +25,8 @@
 using namespace specula;
 using specula::test::GlTest;
 using glm::dvec3;
+using specula::test::hitUnitSphere;
+using specula::test::pixelRay;
 
 namespace {
 
@@ -162,22 +165,14 @@ Comparison compareSphere(const char* name, const Coated& c, const glm::vec3& lig
     renderer.render(view, frameSettings(96));
     const ImageFloat image = renderer.readRadiance();
 
-    const glm::dmat4 inverseViewProjection = glm::inverse(glm::dmat4(view.projection * view.view));
+    const glm::dmat4 inverse = test::inverseViewProjection(view);
     Coated bare = c;
     bare.clearcoat = 0.0;
     Comparison result;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
-            const double ndcX = (x + 0.5) / image.width * 2.0 - 1.0;
-            const double ndcY = 1.0 - (y + 0.5) / image.height * 2.0;
-            const glm::dvec4 nearPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
-            const glm::dvec4 farPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
-            const dvec3 origin = dvec3(nearPoint) / nearPoint.w;
-            const dvec3 direction = glm::normalize(dvec3(farPoint) / farPoint.w - origin);
-            const double b = glm::dot(origin, direction);
-            const double disc = b * b - (glm::dot(origin, origin) - 1.0);
-            if (disc <= 0.0) continue;
-            const dvec3 p = origin + direction * (-b - std::sqrt(disc));
+            dvec3 p;
+            if (!hitUnitSphere(pixelRay(inverse, x, y, image.width, image.height), p)) continue;
             const dvec3 n = glm::normalize(p);
             const dvec3 v = glm::normalize(dvec3(eye) - p);
             if (glm::dot(n, v) < 0.25) continue; // silhouette pixels straddle facets and background
@@ -238,16 +233,13 @@ TEST_F(GlTest, ClearcoatTexturesAndNormalMapFromGltf)
     tn.y *= 0.8;
     const dvec3 n(0.0, 0.0, 1.0);
     const dvec3 nc = glm::normalize(tn); // tangent frame = world axes
-    const glm::dmat4 inverseViewProjection = glm::inverse(glm::dmat4(view.projection * view.view));
+    const glm::dmat4 inverse = test::inverseViewProjection(view);
     int tested = 0;
     double worst = 0.0, tiltMatters = 0.0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
-            const double ndcX = (x + 0.5) / kSize * 2.0 - 1.0, ndcY = 1.0 - (y + 0.5) / kSize * 2.0;
-            const glm::dvec4 a = inverseViewProjection * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
-            const glm::dvec4 b = inverseViewProjection * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
-            const dvec3 origin = dvec3(a) / a.w, direction = glm::normalize(dvec3(b) / b.w - origin);
-            const dvec3 p = origin + direction * (-origin.z / direction.z);
+            const test::Ray ray = pixelRay(inverse, x, y, kSize, kSize);
+            const dvec3 p = ray.origin + ray.direction * (-ray.origin.z / ray.direction.z);
             if (std::abs(p.x) > 0.97 || std::abs(p.y) > 0.97) continue; // the quad's edge pixels
             const dvec3 v = glm::normalize(dvec3(eye) - p);
             const dvec3 toLight = dvec3(lightPosition) - p;

@@ -1,6 +1,7 @@
 // GPU against CPU: a sphere lit by one light, read back as floats, each pixel compared with
 // shading/Brdf.h evaluated at that pixel's analytic ray-sphere hit.
 #include "GlTestContext.h"
+#include "ImageProbe.h"
 
 #include <algorithm>
 #include <optional>
@@ -17,6 +18,8 @@
 using namespace specula;
 using specula::test::GlTest;
 using glm::dvec3;
+using specula::test::hitUnitSphere;
+using specula::test::pixelRay;
 
 namespace {
 
@@ -70,7 +73,6 @@ Result renderAndCompare(const Case& c)
     renderer.render(view, settings);
     const ImageFloat image = renderer.readRadiance();
 
-    const glm::dmat4 inverseViewProjection = glm::inverse(glm::dmat4(view.projection * view.view));
     render::brdf::Surface surface;
     surface.baseColor = dvec3(c.baseColor);
     surface.metallic = c.metallic;
@@ -88,20 +90,12 @@ Result renderAndCompare(const Case& c)
     const dvec3 lightPosition(c.lightPosition);
     const dvec3 lightDirection = glm::normalize(dvec3(c.lightTarget - c.lightPosition));
 
+    const glm::dmat4 inverse = test::inverseViewProjection(view);
     Result result;
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
-            // Ray through the pixel centre (image row 0 is the top).
-            const double ndcX = (x + 0.5) / image.width * 2.0 - 1.0;
-            const double ndcY = 1.0 - (y + 0.5) / image.height * 2.0;
-            const glm::dvec4 nearPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
-            const glm::dvec4 farPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
-            const dvec3 origin = dvec3(nearPoint) / nearPoint.w;
-            const dvec3 direction = glm::normalize(dvec3(farPoint) / farPoint.w - origin);
-            const double b = glm::dot(origin, direction);
-            const double disc = b * b - (glm::dot(origin, origin) - 1.0);
-            if (disc <= 0.0) continue;
-            const dvec3 p = origin + direction * (-b - std::sqrt(disc));
+            dvec3 p;
+            if (!hitUnitSphere(pixelRay(inverse, x, y, image.width, image.height), p)) continue;
             const dvec3 n = glm::normalize(p);
             const dvec3 v = glm::normalize(dvec3(eye) - p);
             if (glm::dot(n, v) < 0.25) continue; // silhouette pixels straddle facets and background

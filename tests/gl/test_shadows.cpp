@@ -9,6 +9,7 @@
 // be at most 2% of the unshadowed value; in the light, within the shading tests' tolerance.
 // Each case also runs with shadows off and must then fail (the test can tell).
 #include "GlTestContext.h"
+#include "ImageProbe.h"
 #include "ShadowScenes.h"
 
 #include <algorithm>
@@ -142,7 +143,7 @@ Comparison compare(const ShadowScene& sc, const render::FrameSettings& base, int
     tested.height = sc.height;
     tested.pixels.assign(size_t(sc.width * sc.height) * 4, 0);
 
-    const glm::dmat4 inverseViewProjection = glm::inverse(glm::dmat4(view.projection * view.view));
+    const glm::dmat4 inverse = test::inverseViewProjection(view);
     render::brdf::Surface surface;
     surface.baseColor = dvec3(kBaseColor);
     surface.metallic = 0.0;
@@ -152,10 +153,8 @@ Comparison compare(const ShadowScene& sc, const render::FrameSettings& base, int
     std::vector<dvec3> unshadowed(size_t(w * h), dvec3(0.0));
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            const double ndcX = (x + 0.5) / w * 2.0 - 1.0, ndcY = 1.0 - (y + 0.5) / h * 2.0;
-            const glm::dvec4 n0 = inverseViewProjection * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
-            const glm::dvec4 n1 = inverseViewProjection * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
-            const dvec3 o = dvec3(n0) / n0.w, d = glm::normalize(dvec3(n1) / n1.w - o);
+            const test::Ray ray = test::pixelRay(inverse, x, y, w, h);
+            const dvec3 o = ray.origin, d = ray.direction;
             const Hit hit = intersect(sc, o, d);
             if (hit.object < 0) continue;
             const dvec3 p = o + d * hit.t;

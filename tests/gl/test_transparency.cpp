@@ -3,6 +3,7 @@
 // Fresnel at normal incidence and Beer–Lambert for transmission, McGuire & Bavoil's weighted
 // mean for order-independent transparency, Porter–Duff "over" for sorted blending.
 #include "GlTestContext.h"
+#include "ImageProbe.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,6 +22,8 @@
 using namespace specula;
 using specula::test::GlTest;
 using glm::dvec3;
+using specula::test::pixelRay;
+using specula::test::Ray;
 
 namespace {
 
@@ -48,21 +51,6 @@ dvec3 pixel(const ImageFloat& image, int x, int y)
 {
     const float* p = &image.pixels[(size_t(y) * size_t(image.width) + size_t(x)) * 4];
     return dvec3(p[0], p[1], p[2]);
-}
-
-/// The world-space ray through pixel (x, y)'s centre (row 0 at the top).
-struct Ray {
-    dvec3 origin, direction;
-};
-Ray pixelRay(const render::View& view, int x, int y, int width, int height)
-{
-    const glm::dmat4 inverse = glm::inverse(glm::dmat4(view.projection * view.view));
-    const double ndcX = (x + 0.5) / width * 2.0 - 1.0;
-    const double ndcY = 1.0 - (y + 0.5) / height * 2.0;
-    const glm::dvec4 nearPoint = inverse * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
-    const glm::dvec4 farPoint = inverse * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
-    const dvec3 origin = dvec3(nearPoint) / nearPoint.w;
-    return {origin, glm::normalize(dvec3(farPoint) / farPoint.w - origin)};
 }
 
 /// Where the ray meets the square of half side `half` (world units) centred at the origin of
