@@ -92,6 +92,7 @@ int runBench(const BenchArgs& args)
             s.renderer->setScene(s.document.scene);
             const setup::AnimationChoice animation = setup::resolveAnimation(s.document.scene, args.frame);
             s.renderer->setPose(animation.index, animation.seconds);
+            s.renderer->setVariant(setup::resolveVariant(s.document.scene, args.frame));
             if (environment) s.bake = s.renderer->setEnvironment(*environment, setup::resolveBakeSettings(args.frame), cache);
             s.renderer->render(s.view, s.settings);
             glFinish();

@@ -89,6 +89,8 @@ void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
     command->add_option("--animation", frame.animation,
                         "the glTF animation to pose the scene with: its name or index, or none (the rest pose); default: the first");
     command->add_option("--time", frame.time, "seconds into the animation (default 0; past its end: its last pose)");
+    command->add_option("--variant", frame.variant,
+                        "the glTF material variant (KHR_materials_variants): its name or index, or none (default: the file's materials)");
     addPostOptions(command, frame);
     addLoadOptions(command, frame.load);
 }

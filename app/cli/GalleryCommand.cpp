@@ -55,6 +55,7 @@ int runGallery(const GalleryArgs& args)
     renderer.setScene(document.scene);
     const setup::AnimationChoice animation = setup::resolveAnimation(document.scene, options);
     renderer.setPose(animation.index, animation.seconds);
+    renderer.setVariant(setup::resolveVariant(document.scene, options));
     if (environment) renderer.setEnvironment(*environment, setup::resolveBakeSettings(options), setup::cacheDirectory(options));
 
     std::vector<render::SheetTile> tiles;

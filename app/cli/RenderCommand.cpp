@@ -53,6 +53,7 @@ struct LoadedScene {
     scene::SceneDocument document;
     render::FrameSettings settings;
     setup::AnimationChoice animation;
+    int variant = -1; ///< KHR_materials_variants (--variant)
     std::optional<render::EnvironmentMap> environment;
     std::vector<Shot> shots;
 };
@@ -90,6 +91,7 @@ int runRender(const RenderArgs& args)
         s.document = setup::loadSceneOrBuiltin(sceneArg, args.frame.load, args.frame.lights);
         s.settings = setup::resolveSettings(s.document, args.frame);
         s.animation = setup::resolveAnimation(s.document.scene, args.frame);
+        s.variant = setup::resolveVariant(s.document.scene, args.frame);
         s.environment = setup::loadEnvironment(s.document, args.frame);
         std::vector<int> cameras{args.frame.camera};
         if (args.frame.allCameras) {
@@ -130,6 +132,7 @@ int runRender(const RenderArgs& args)
     for (LoadedScene& s : loaded) {
         renderer.setScene(s.document.scene);
         renderer.setPose(s.animation.index, s.animation.seconds);
+        renderer.setVariant(s.variant);
         if (s.environment)
             renderer.setEnvironment(*s.environment, bake, setup::cacheDirectory(args.frame));
         else

@@ -71,6 +71,9 @@ void Viewer::loadScene(const std::string& name)
     timeline.time = animation.seconds;
     timeline.playing = !(first && mOptions.time);
     mPosed.reset();
+    // The first scene is drawn with --variant's materials, a dropped one with its own.
+    mVariant = first ? setup::resolveVariant(document.scene, mOptions) : -1;
+    mRenderer->setVariant(mVariant);
     if (first) {
         settings.gizmos = true; // the viewer shows where its lights are
         mSettings = settings;
@@ -126,6 +129,12 @@ float Viewer::animationDuration() const
     const auto& animations = mDocument.scene.animations;
     if (timeline.animation < 0 || size_t(timeline.animation) >= animations.size()) return 0.0f;
     return animations[size_t(timeline.animation)].duration();
+}
+
+void Viewer::setVariant(int variant)
+{
+    mVariant = variant;
+    mRenderer->setVariant(variant);
 }
 
 void Viewer::advanceTimeline(float deltaSeconds)
@@ -367,6 +376,7 @@ void Viewer::setMaterialParameter(int index, render::MaterialParameter parameter
     case render::MaterialParameter::SectorLight: m.sectorLight = int(std::lround(std::clamp(value.x, 0.0f, 255.0f))); break;
     case render::MaterialParameter::ClearcoatFactor: m.clearcoatFactor = std::clamp(value.x, 0.0f, 1.0f); break;
     case render::MaterialParameter::ClearcoatRoughness: m.clearcoatRoughnessFactor = std::clamp(value.x, 0.0f, 1.0f); break;
+    case render::MaterialParameter::Dispersion: m.dispersion = std::max(value.x, 0.0f); break;
     case render::MaterialParameter::PhongSpecular: // the classic ks: only in the record
     case render::MaterialParameter::SpecularColor: break; // colour × ior: setMaterialIor
     }
@@ -393,8 +403,12 @@ int Viewer::pickMaterial(float x, float y)
     const glm::vec3 direction = glm::vec3(farPoint) / farPoint.w - origin;
     const auto hit = scene::pick(mDocument.scene, origin, direction);
     if (!hit) return -1;
-    // The renderer's registry puts the glTF default material after the scene's.
-    selectedMaterial = hit->material >= 0 ? hit->material : int(mDocument.scene.materials.size());
+    // What the primitive draws with under the chosen variant; the renderer's registry puts the
+    // glTF default material after the scene's.
+    int material = hit->material;
+    for (const scene::VariantMapping& mapping : mDocument.scene.meshes[size_t(hit->mesh)].primitives[size_t(hit->primitive)].variants)
+        if (mapping.variant == mVariant) material = mapping.material;
+    selectedMaterial = material >= 0 ? material : int(mDocument.scene.materials.size());
     lastMessage = "picked material " + std::to_string(selectedMaterial);
     panelRequests["Materials"] = true;
     log::info("{} (node {}, mesh {})", lastMessage, hit->node, hit->mesh);

@@ -137,6 +137,9 @@ public:
     float brdfViewDegrees = 30.0f;            ///< BRDF explorer: angle of the view to the normal
     std::array<char, 512> environmentInput{}; ///< Environment panel: the path being typed
     Timeline timeline;
+    /// KHR_materials_variants: the variant the scene is drawn with (-1: none, the file's materials).
+    int variant() const { return mVariant; }
+    void setVariant(int variant);
     /// The animation's length in seconds (0: none, or no keyframes).
     float animationDuration() const;
     /// Frame times (ms), oldest first, for the graph.
@@ -148,6 +151,7 @@ private:
     /// animation or time changed since the last pose.
     void advanceTimeline(float deltaSeconds);
     std::optional<std::pair<int, float>> mPosed; ///< the pose the renderer holds
+    int mVariant = -1;
     platform::Context& mContext;
     setup::FrameOptions mOptions;
     std::unique_ptr<render::Renderer> mRenderer;

@@ -178,6 +178,13 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         return 0;
     }
     if (a == "time") { viewer.timeline.time = w.number(1); return 0; }
+    // KHR_materials_variants.
+    if (a == "variant") {
+        setup::FrameOptions options;
+        options.variant = w.text(1);
+        viewer.setVariant(setup::resolveVariant(viewer.document().scene, options));
+        return 0;
+    }
     if (a == "play") { viewer.timeline.playing = true; return 0; }
     if (a == "pause") { viewer.timeline.playing = false; return 0; }
     if (a == "speed") { viewer.timeline.speed = w.number(1); return 0; }
@@ -274,6 +281,7 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         if (w.size() > 3) viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::ClearcoatRoughness, glm::vec4(w.number(3)));
         return 0;
     }
+    if (a == "material-dispersion") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Dispersion, glm::vec4(w.number(2))); return 0; }
     if (a == "material-metallic") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Metallic, glm::vec4(w.number(2))); return 0; }
     if (a == "material-emissive") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Emissive, glm::vec4(w.vec3(2), 0.0f)); return 0; }
     if (a == "material-ior") { viewer.setMaterialIor(w.integer(1), w.number(2)); return 0; }

@@ -258,6 +258,16 @@ void materialsPanel(Viewer& viewer)
     std::vector<scene::Material>& materials = viewer.document().scene.materials;
     const int count = renderer.materialCount();
     if (count == 0) return;
+    // KHR_materials_variants: the whole scene's choice of materials.
+    const std::vector<std::string>& variants = viewer.document().scene.variants;
+    if (!variants.empty()) {
+        auto variantName = [&](int i) { return i < 0 ? std::string("none (the file's materials)") : std::to_string(i) + ": " + variants[size_t(i)]; };
+        if (ImGui::BeginCombo("variant", variantName(viewer.variant()).c_str())) {
+            for (int i = -1; i < int(variants.size()); ++i)
+                if (ImGui::Selectable(variantName(i).c_str(), i == viewer.variant())) viewer.setVariant(i);
+            ImGui::EndCombo();
+        }
+    }
     int& m = viewer.selectedMaterial;
     m = std::clamp(m, 0, count - 1);
     auto nameOf = [&](int i) {
@@ -342,6 +352,10 @@ void materialsPanel(Viewer& viewer)
     if (ImGui::SliderFloat("clearcoat", &clearcoat, 0.0f, 1.0f)) set(MaterialParameter::ClearcoatFactor, glm::vec4(clearcoat));
     if (ImGui::SliderFloat("clearcoat roughness", &clearcoatRoughness, 0.0f, 1.0f))
         set(MaterialParameter::ClearcoatRoughness, glm::vec4(clearcoatRoughness));
+    ImGui::Separator();
+    ImGui::TextDisabled("KHR_materials_dispersion (volumes)");
+    float dispersion = value(MaterialParameter::Dispersion).x;
+    if (ImGui::SliderFloat("dispersion (20/V)", &dispersion, 0.0f, 20.0f)) set(MaterialParameter::Dispersion, glm::vec4(dispersion));
     ImGui::Separator();
     ImGui::TextDisabled("Phong, Blinn-Phong, Gouraud, flat");
     glm::vec4 ks = value(MaterialParameter::PhongSpecular);

@@ -27,7 +27,7 @@ vec3 volumeAttenuation(float pathLength, vec3 color, float distance)
 // the opaque frame at the refracted ray's exit point, mip level from roughness, attenuated on
 // its way through the volume. Where the frame holds nothing (its alpha: the covered fraction,
 // when image-based light is on) the environment is seen along the refracted ray instead.
-vec3 transmittedRadiance(vec3 n, vec3 v, vec3 position, float ior, float thickness, float perceptualRoughness)
+vec3 transmittedRadianceAt(vec3 n, vec3 v, vec3 position, float ior, float thickness, float perceptualRoughness)
 {
     vec3 direction = -v;
     vec3 exit = position;
@@ -52,4 +52,20 @@ vec3 transmittedRadiance(vec3 n, vec3 v, vec3 position, float ior, float thickne
     radiance += (1.0 - behind.a) * prefilteredRadiance(direction, perceptualRoughness) * environment.params.x;
 #endif
     return radiance * volumeAttenuation(pathLength, material.attenuation.rgb, material.transmission.w);
+}
+
+// KHR_materials_dispersion (DISPERSION variant): red, green and blue refract through the volume
+// with their own index of refraction, the extension's linear spread about the material's (its
+// green), half of (n_F − n_C) = (ior − 1) / V_d each way, 20 / V_d being the stored value; each
+// channel is read along its own ray. Red's index is kept at 1 or above.
+vec3 transmittedRadiance(vec3 n, vec3 v, vec3 position, float ior, float thickness, float perceptualRoughness)
+{
+#if defined(DISPERSION)
+    float halfSpread = (ior - 1.0) * 0.025 * material.attenuation.w;
+    return vec3(transmittedRadianceAt(n, v, position, max(ior - halfSpread, 1.0), thickness, perceptualRoughness).r,
+                transmittedRadianceAt(n, v, position, ior, thickness, perceptualRoughness).g,
+                transmittedRadianceAt(n, v, position, ior + halfSpread, thickness, perceptualRoughness).b);
+#else
+    return transmittedRadianceAt(n, v, position, ior, thickness, perceptualRoughness);
+#endif
 }

@@ -22,6 +22,8 @@ SPECULA_SHARED_BEGIN
 #define SPECULA_MATERIAL_TRANSMISSION 1024u     // KHR_materials_transmission factor above 0
 #define SPECULA_MATERIAL_CLEARCOAT 2048u        // KHR_materials_clearcoat factor above 0
 #define SPECULA_MATERIAL_HAS_CLEARCOAT_NORMAL_TEXTURE 4096u // read at run time by the CLEARCOAT variant
+// Bits 16-30 of a material's feature word hold its shading choice (shading/ShadingVariant.h).
+#define SPECULA_MATERIAL_DISPERSION 0x80000000u // KHR_materials_dispersion above 0 on a volume
 
 struct GpuMaterial {
     vec4 baseColorFactor;
@@ -39,7 +41,7 @@ struct GpuMaterial {
     vec4 transmission;    // x KHR_materials_transmission factor, y ior (refraction; 1.5 by default),
                           // z KHR_materials_volume thickness (object-space metres, 0 = thin-walled),
                           // w attenuation distance (metres, 0 = infinite)
-    vec4 attenuation;     // rgb KHR_materials_volume attenuation colour
+    vec4 attenuation;     // rgb KHR_materials_volume attenuation colour, w KHR_materials_dispersion (20 / V_d)
     vec4 clearcoat;       // KHR_materials_clearcoat: x clearcoatFactor, y clearcoatRoughnessFactor
                           // (perceptual), z clearcoat normal texture scale
 };

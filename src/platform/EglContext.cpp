@@ -11,6 +11,7 @@
 #include "core/Error.h"
 #include "core/Log.h"
 #include "platform/Context.h"
+#include "platform/KeepDriverLoaded.h"
 
 namespace specula::platform {
 namespace {
@@ -157,6 +158,7 @@ std::unique_ptr<Context> Context::createHeadless(const ContextDesc& desc)
     std::vector<std::string> order = {"surfaceless", "device", "pbuffer"};
     if (const char* forced = std::getenv("SPECULA_EGL_PLATFORM"); forced && *forced) order = {forced};
 
+    keepDriverLoaded();
     std::string failures;
     for (const std::string& platform : order) {
         auto context = std::unique_ptr<EglContext>(new EglContext());

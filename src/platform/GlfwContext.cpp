@@ -4,6 +4,7 @@
 
 #include "core/Error.h"
 #include "platform/Context.h"
+#include "platform/KeepDriverLoaded.h"
 
 namespace specula::platform {
 namespace {
@@ -12,6 +13,7 @@ class GlfwContext final : public Context {
 public:
     explicit GlfwContext(const ContextDesc& desc)
     {
+        keepDriverLoaded();
         glfwSetErrorCallback([](int, const char*) {});
         if (!glfwInit()) throw Error("cannot open a window: GLFW could not initialise (is there a display?)");
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);

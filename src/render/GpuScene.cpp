@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -206,7 +207,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         // KHR_materials_ior: the shader's dielectric F0 is 0.04 x specular.rgb (x factor).
         if (m.ior) gpu.specular = glm::vec4(m.specularColorFactor * (scene::f0FromIor(*m.ior) / 0.04f), m.specularFactor);
         gpu.transmission = glm::vec4(m.transmissionFactor, m.ior.value_or(1.5f), m.thickness, m.attenuationDistance);
-        gpu.attenuation = glm::vec4(m.attenuationColor, 0.0f);
+        gpu.attenuation = glm::vec4(m.attenuationColor, m.dispersion);
         gpu.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughnessFactor, m.clearcoatNormalScale, 0.0f);
         // Classic models' specular colour: mid grey, a plastic highlight (Phong 1975's ks).
         gpu.phong = glm::vec4(glm::vec3(0.5f), m.shininess);
@@ -248,6 +249,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
         if (m.alphaMode == scene::AlphaMode::Blend && m.blendMode == scene::BlendMode::Transparent)
             gpu.flags.x |= SPECULA_MATERIAL_BLEND_TRANSPARENT;
         if (m.transmissionFactor > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_TRANSMISSION;
+        // Dispersion spreads what a volume refracts: nothing to spread without one.
+        if (m.dispersion > 0.0f && m.thickness > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_DISPERSION;
         // A zero factor is no layer at all (the texture only scales the factor): no variant for it.
         binding.clearcoat = m.clearcoatFactor > 0.0f;
         if (binding.clearcoat) gpu.flags.x |= SPECULA_MATERIAL_CLEARCOAT;
@@ -267,7 +270,9 @@ GpuScene::GpuScene(const scene::Scene& scene)
         gpu.indexed = !p.indices.empty();
         gpu.count = uint32_t(gpu.indexed ? p.indices.size() : p.vertices.size());
         if (gpu.indexed) gpu.indices = gl::Buffer(p.indices.size() * sizeof(uint32_t), p.indices.data(), name + " indices");
-        gpu.material = p.material >= 0 && p.material < defaultMaterial ? p.material : defaultMaterial;
+        auto record = [&](int material) { return material >= 0 && material < defaultMaterial ? material : defaultMaterial; };
+        gpu.material = gpu.baseMaterial = record(p.material);
+        for (const scene::VariantMapping& mapping : p.variants) gpu.variants.push_back({mapping.variant, record(mapping.material)});
         gpu.bounds = p.bounds;
         gpu.vertexArray = gl::VertexArray(name);
         gpu.vertexArray.vertexBuffer(0, gpu.vertices, 0, sizeof(scene::Vertex))
@@ -289,19 +294,26 @@ GpuScene::GpuScene(const scene::Scene& scene)
         }
     }
     // Vertex colours multiply base colour (glTF COLOR_0); the flag lives on the material,
-    // so a primitive with colours gets its own copy of its material record.
+    // so primitives with colours draw with a copy of their material's record (one per material).
+    std::map<int, int> colourCopies;
+    auto colourCopy = [&](int material) {
+        const auto [found, added] = colourCopies.try_emplace(material, int(gpuMaterials.size()));
+        if (!added) return found->second;
+        shared::GpuMaterial copy = gpuMaterials[size_t(material)];
+        copy.flags.x |= SPECULA_MATERIAL_USE_VERTEX_COLOR;
+        gpuMaterials.push_back(copy);
+        mMaterials.push_back(mMaterials[size_t(material)]);
+        mMaterials.back().features = copy.flags.x | (mMaterials[size_t(material)].features & kShadingFeatureMask);
+        mRecordMaterial.push_back(mRecordMaterial[size_t(material)]);
+        return found->second;
+    };
     for (size_t meshIndex = 0, primitiveIndex = 0; meshIndex < scene.meshes.size(); ++meshIndex) {
         for (const scene::Primitive& p : scene.meshes[meshIndex].primitives) {
             if (p.vertices.empty()) continue;
             GpuPrimitive& gpu = mPrimitives[primitiveIndex++];
             if (!p.hasColors) continue;
-            shared::GpuMaterial copy = gpuMaterials[size_t(gpu.material)];
-            copy.flags.x |= SPECULA_MATERIAL_USE_VERTEX_COLOR;
-            gpuMaterials.push_back(copy);
-            mMaterials.push_back(mMaterials[size_t(gpu.material)]);
-            mMaterials.back().features = copy.flags.x | (mMaterials[size_t(gpu.material)].features & kShadingFeatureMask);
-            mRecordMaterial.push_back(mRecordMaterial[size_t(gpu.material)]);
-            gpu.material = int(gpuMaterials.size() - 1);
+            gpu.material = gpu.baseMaterial = colourCopy(gpu.baseMaterial);
+            for (scene::VariantMapping& mapping : gpu.variants) mapping.material = colourCopy(mapping.material);
         }
     }
     // Each record starts at a multiple of GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT so it can be bound alone.
@@ -343,7 +355,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
                 deformed.skinned = node.skin >= 0 && source.influences > 0;
                 mDeformed.push_back(deformed);
                 GpuPrimitive own = upload(source, scene.meshes[size_t(instance.mesh)].name + " (deformed)");
-                own.material = mPrimitives[size_t(primitive)].material;
+                own.material = own.baseMaterial = mPrimitives[size_t(primitive)].material;
+                own.variants = mPrimitives[size_t(primitive)].variants;
                 primitive = int(mPrimitives.size());
                 mPrimitives.push_back(std::move(own));
             }
@@ -376,6 +389,20 @@ void GpuScene::updateBounds()
         mBounds.extend(world);
         if (item.castShadows && castsShadow(mMaterials[size_t(p.material)])) mCasterBounds.extend(world);
     }
+}
+
+bool GpuScene::setVariant(int variant)
+{
+    bool changed = false;
+    for (GpuPrimitive& p : mPrimitives) {
+        int material = p.baseMaterial;
+        for (const scene::VariantMapping& mapping : p.variants)
+            if (mapping.variant == variant) material = mapping.material;
+        changed = changed || material != p.material;
+        p.material = material;
+    }
+    if (changed) updateBounds(); // a variant may cast no shadow where the material did
+    return changed;
 }
 
 size_t GpuScene::setPose(int animation, float seconds)
@@ -447,12 +474,18 @@ void GpuScene::setBlendMode(int material, scene::BlendMode mode)
 
 void GpuScene::setClearcoat(int material, bool on)
 {
+    setFeature(material, SPECULA_MATERIAL_CLEARCOAT, on);
+    for (size_t record = 0; record < mMaterials.size(); ++record)
+        if (mRecordMaterial[record] == material) mMaterials[record].clearcoat = on;
+}
+
+void GpuScene::setFeature(int material, uint32_t bit, bool on)
+{
     for (size_t record = 0; record < mMaterials.size(); ++record) {
         if (mRecordMaterial[record] != material) continue;
         MaterialBinding& binding = mMaterials[record];
-        binding.clearcoat = on;
-        binding.features = on ? binding.features | SPECULA_MATERIAL_CLEARCOAT : binding.features & ~uint32_t(SPECULA_MATERIAL_CLEARCOAT);
-        mRecords[record].flags.x = (mRecords[record].flags.x & ~uint32_t(SPECULA_MATERIAL_CLEARCOAT)) | (binding.features & SPECULA_MATERIAL_CLEARCOAT);
+        binding.features = on ? binding.features | bit : binding.features & ~bit;
+        mRecords[record].flags.x = (mRecords[record].flags.x & ~bit) | (binding.features & bit);
         mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
                                &mRecords[record].flags.x);
     }

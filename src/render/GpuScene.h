@@ -26,6 +26,10 @@ struct GpuPrimitive {
     std::string name; ///< the mesh's, for labels
     int material = 0;     ///< index into GpuScene::materials (the default material is last)
     scene::Bounds bounds; ///< object space
+    /// KHR_materials_variants: `material` when no variant is chosen, and the record under each
+    /// variant that maps the primitive (VariantMapping::material is a GpuScene::materials index).
+    int baseMaterial = 0;
+    std::vector<scene::VariantMapping> variants;
 };
 
 enum class TextureSlot {
@@ -89,6 +93,9 @@ public:
     /// Sets or clears SPECULA_MATERIAL_CLEARCOAT of `material` (and its copies): a layer of factor
     /// 0 is no layer, so its variant goes.
     void setClearcoat(int material, bool on);
+    /// Sets or clears feature bit `bit` (a SPECULA_MATERIAL_* that selects a variant) of
+    /// `material` and its copies, in the variant key and the uploaded record.
+    void setFeature(int material, uint32_t bit, bool on);
     /// Writes `size` bytes at `offset` within `material`'s record (and its copies'), in the
     /// CPU copy and in the buffer: no other byte of the buffer is written.
     void writeMaterial(int material, size_t offset, size_t size, const void* data);
@@ -108,6 +115,11 @@ public:
     /// the rest pose) at `seconds`. Moves the draws, re-deforms skinned and morphed primitives
     /// and updates the bounds. Returns the bytes of vertices it uploaded.
     size_t setPose(int animation, float seconds);
+    /// KHR_materials_variants: draws every primitive with its material under variant `variant`
+    /// (an index into the scene's variants; -1: none, the materials the primitives name).
+    /// Returns whether any draw's material changed.
+    bool setVariant(int variant);
+
     /// Every node's world matrix at the last setPose (empty before one, and for a static scene).
     const std::vector<glm::mat4>& nodeWorlds() const { return mNodeWorlds; }
 

@@ -223,6 +223,12 @@ void Renderer::setScene(const scene::Scene& scene)
     for (const scene::LightInstance& instance : scene.lightInstances()) mImpl->lightNodes.push_back(instance.node);
 }
 
+void Renderer::setVariant(int variant)
+{
+    GpuScene* gpu = mImpl->stores.scene.get();
+    if (gpu && gpu->setVariant(variant)) ++mImpl->stores.casterVersion; // casters' materials changed
+}
+
 void Renderer::setPose(int animation, float seconds)
 {
     GpuScene* gpu = mImpl->stores.scene.get();
@@ -496,6 +502,7 @@ glm::vec4 Renderer::materialParameter(int material, MaterialParameter parameter)
     case MaterialParameter::SectorLight: return glm::vec4(r.emissive.w * 255.0f, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::ClearcoatFactor: return glm::vec4(r.clearcoat.x, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::ClearcoatRoughness: return glm::vec4(r.clearcoat.y, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::Dispersion: return glm::vec4(r.attenuation.w, 0.0f, 0.0f, 0.0f);
     }
     return glm::vec4(0.0f);
 }
@@ -550,6 +557,12 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::ClearcoatRoughness: {
         const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
         gpu.writeMaterial(material, offsetof(GpuMaterial, clearcoat) + sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::Dispersion: {
+        const glm::vec4 v(std::max(value.x, 0.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, attenuation) + 3 * sizeof(float), sizeof(float), &v.x);
+        gpu.setFeature(material, SPECULA_MATERIAL_DISPERSION, v.x > 0.0f && gpu.record(material).transmission.z > 0.0f);
         break;
     }
     }

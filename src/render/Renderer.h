@@ -44,8 +44,11 @@ enum class MaterialParameter {
     SectorLight,    ///< x, the Doom model's sector light level, 0–255
     ClearcoatFactor,    ///< x, KHR_materials_clearcoat factor (0 = no layer: the CLEARCOAT variant goes)
     ClearcoatRoughness, ///< x, the layer's perceptual roughness
+    /// x, KHR_materials_dispersion (20 / V_d; 0 = none: the DISPERSION variant goes); refracts
+    /// per channel only through a volume (a transmissive material with a thickness)
+    Dispersion,
 };
-constexpr int kMaterialParameterCount = int(MaterialParameter::ClearcoatRoughness) + 1;
+constexpr int kMaterialParameterCount = int(MaterialParameter::Dispersion) + 1;
 
 /// How the specular lobe integrates image-based light (docs/ibl.md).
 enum class IblSpecular {
@@ -199,6 +202,10 @@ public:
     /// meshes are deformed (every pass draws the deformed vertices), shadow maps are redrawn.
     /// Nothing for a scene that does not move (no animations, skins or morph targets).
     void setPose(int animation, float seconds);
+    /// KHR_materials_variants: draws the scene of setScene with the materials of variant
+    /// `variant` (an index into its variants; -1: none, the materials its primitives name).
+    /// Shadow maps are redrawn when a draw's material changed.
+    void setVariant(int variant);
 
     // The lights, as many as there are (setScene places the scene's). Changes apply from the
     // next frame.

@@ -26,11 +26,13 @@ constexpr std::string_view kSupportedExtensions[] = {
     "KHR_draco_mesh_compression", // primitives decoded with Draco (GltfCompression.cpp)
     "KHR_lights_punctual",
     "KHR_materials_clearcoat", // the clearcoat layer (Material::clearcoat*)
+    "KHR_materials_dispersion", // per-channel refraction through a volume (Material::dispersion)
     "KHR_materials_emissive_strength",
     "KHR_materials_ior",      // F0 of the dielectric part (Material::ior)
     "KHR_materials_specular", // factors; its textures are ignored
     "KHR_materials_transmission", // factor; its texture is ignored (docs/transparency.md)
     "KHR_materials_unlit",    // the unlit shading model (Material::shading)
+    "KHR_materials_variants", // material variants (Scene::variants, Primitive::variants; --variant)
     "KHR_materials_volume",       // thickness and attenuation factors; its texture is ignored
     "KHR_mesh_quantization", // integer attributes: the accessor reader handles every component type
     "KHR_texture_transform",

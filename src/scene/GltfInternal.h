@@ -86,6 +86,7 @@ public:
         convertImages();
         convertSamplers();
         convertMaterials();
+        convertVariants();
         convertMeshes();
         convertCameras();
         convertLights();
@@ -168,6 +169,10 @@ private:
                           std::string_view where);
 
     void convertMaterials();
+    /// KHR_materials_variants: the variants' names (the root extension); each primitive's
+    /// mappings are read with it (readVariantMappings).
+    void convertVariants();
+    void readVariantMappings(const tinygltf::Primitive& source, Primitive& primitive, const std::string& where) const;
 
     // -- meshes (GltfMeshes.cpp) ---------------------------------------------------------------
 

@@ -291,6 +291,11 @@ void Importer::convertMaterials()
             if (member(*volume, "thicknessTexture"))
                 warn("{} has a thicknessTexture, which is not read; its thicknessFactor is used", where);
         }
+        // KHR_materials_dispersion: 20 / V_d; it spreads the refraction through a volume.
+        if (const tinygltf::Value* dispersion = extension(source.extensions, "KHR_materials_dispersion")) {
+            const double value = number(*dispersion, "dispersion").value_or(0.0);
+            material.dispersion = std::isfinite(value) ? float(std::max(value, 0.0)) : 0.0f;
+        }
         material.normalScale = float(source.normalTexture.scale);
         material.occlusionStrength = float(source.occlusionTexture.strength);
         if (source.alphaMode == "MASK") {
@@ -335,6 +340,50 @@ void Importer::convertMaterials()
             material.emissiveTexture = {};
         }
         mScene.materials.push_back(std::move(material));
+    }
+}
+
+void Importer::convertVariants()
+{
+    const tinygltf::Value* root = extension(mModel.extensions, "KHR_materials_variants");
+    if (!root) return;
+    const tinygltf::Value* variants = member(*root, "variants");
+    if (!variants || !variants->IsArray()) fail("KHR_materials_variants has no \"variants\" array");
+    for (size_t i = 0; i < variants->ArrayLen(); ++i) {
+        const tinygltf::Value* name = member(variants->Get(int(i)), "name");
+        if (!name || !name->IsString()) fail("KHR_materials_variants variant {} has no name", i);
+        mScene.variants.push_back(name->Get<std::string>());
+    }
+}
+
+void Importer::readVariantMappings(const tinygltf::Primitive& source, Primitive& primitive, const std::string& where) const
+{
+    const tinygltf::Value* extensionObject = extension(source.extensions, "KHR_materials_variants");
+    if (!extensionObject) return;
+    const auto context = where + " KHR_materials_variants";
+    const tinygltf::Value* mappings = member(*extensionObject, "mappings");
+    if (!mappings || !mappings->IsArray()) fail("{} has no \"mappings\" array", context);
+    for (size_t m = 0; m < mappings->ArrayLen(); ++m) {
+        const tinygltf::Value& mapping = mappings->Get(int(m));
+        const auto mappingWhere = fmt::format("{} mapping {}", context, m);
+        const std::optional<int> material = integer(mapping, "material");
+        if (!material) fail("{} has no material", mappingWhere);
+        at(mModel.materials, *material, "material", mappingWhere);
+        const tinygltf::Value* variants = member(mapping, "variants");
+        if (!variants || !variants->IsArray() || variants->ArrayLen() == 0)
+            fail("{} has no \"variants\" array", mappingWhere);
+        for (size_t v = 0; v < variants->ArrayLen(); ++v) {
+            const tinygltf::Value& index = variants->Get(int(v));
+            const double value = index.IsNumber() ? index.GetNumberAsDouble() : -1.0;
+            if (!(value >= 0.0 && value < double(mScene.variants.size())) || value != double(int(value)))
+                fail("{} refers to variant {}, which is out of range (the file has {})", mappingWhere,
+                     index.IsNumber() ? fmt::format("{}", value) : std::string("(not a number)"), mScene.variants.size());
+            const int variant = int(value);
+            // Each variant once per primitive: a second mapping of it would be ambiguous.
+            for (const VariantMapping& earlier : primitive.variants)
+                if (earlier.variant == variant) fail("{} maps variant {} a second time", mappingWhere, variant);
+            primitive.variants.push_back({variant, *material});
+        }
     }
 }
 

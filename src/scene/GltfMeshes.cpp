@@ -313,15 +313,20 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
         at(mModel.materials, source.material, "material", where);
         primitive.material = source.material;
     }
+    readVariantMappings(source, primitive, where);
 
     if (!normals) {
         // The glTF 2.0 spec (Meshes): without normals, flat normals, and tangents are ignored.
         generateFlatNormals(primitive);
         primitive.hasTangents = false;
     }
-    if (!primitive.hasTangents && primitive.material >= 0) {
-        // The clearcoat layer's normal map needs the tangent frame too.
-        const Material& material = mScene.materials[size_t(primitive.material)];
+    // A normal map needs the tangent frame: the material's, or a variant's (the clearcoat
+    // layer's normal map too).
+    std::vector<int> materials = {primitive.material};
+    for (const VariantMapping& mapping : primitive.variants) materials.push_back(mapping.material);
+    for (int index : materials) {
+        if (primitive.hasTangents || index < 0) continue;
+        const Material& material = mScene.materials[size_t(index)];
         const TextureRef& normalTexture = material.normalTexture.valid() ? material.normalTexture : material.clearcoatNormalTexture;
         if (normalTexture.valid()) generateTangents(primitive, normalTexture.texCoord);
     }

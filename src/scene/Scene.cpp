@@ -1,5 +1,7 @@
 #include "scene/Scene.h"
 
+#include <algorithm>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtx/quaternion.hpp>
 
@@ -60,16 +62,22 @@ void Scene::append(Scene other, const glm::mat4& transform)
         if (ref.image >= 0) ref.image += imageBase;
         if (ref.sampler >= 0) ref.sampler += samplerBase;
     };
-    for (auto& material : other.materials) {
-        shiftTexture(material.baseColorTexture);
-        shiftTexture(material.metallicRoughnessTexture);
-        shiftTexture(material.normalTexture);
-        shiftTexture(material.occlusionTexture);
-        shiftTexture(material.emissiveTexture);
+    for (auto& material : other.materials) material.forEachTexture(shiftTexture);
+    // Variants are matched by name: a variant "red" chooses the red of every model that has one.
+    std::vector<int> variantIndex;
+    for (const std::string& name : other.variants) {
+        const auto found = std::find(variants.begin(), variants.end(), name);
+        variantIndex.push_back(int(found - variants.begin()));
+        if (found == variants.end()) variants.push_back(name);
     }
     for (auto& mesh : other.meshes)
-        for (auto& primitive : mesh.primitives)
+        for (auto& primitive : mesh.primitives) {
             if (primitive.material >= 0) primitive.material += materialBase;
+            for (VariantMapping& mapping : primitive.variants) {
+                if (mapping.material >= 0) mapping.material += materialBase;
+                mapping.variant = variantIndex[size_t(mapping.variant)];
+            }
+        }
     for (auto& node : other.nodes) {
         if (node.mesh >= 0) node.mesh += meshBase;
         if (node.camera >= 0) node.camera += cameraBase;

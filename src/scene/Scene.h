@@ -94,6 +94,9 @@ struct Material {
     float thickness = 0.0f;
     float attenuationDistance = 0.0f;
     glm::vec3 attenuationColor{1.0f};
+    /// KHR_materials_dispersion: 20 / the Abbe number V_d (0 = none). A volume's red, green and
+    /// blue refract with their own index of refraction (ior ∓ (ior − 1) × 0.025 × dispersion).
+    float dispersion = 0.0f;
     TextureRef baseColorTexture;         ///< sRGB
     TextureRef metallicRoughnessTexture; ///< G = roughness, B = metallic
     TextureRef normalTexture;
@@ -118,6 +121,15 @@ struct Material {
     /// Doom model: the sector's light level, 0–255 (scene/DoomLighting.h). The default, 192,
     /// is a lit room's: full bright up close, darker with distance (255 never darkens).
     int sectorLight = 192;
+
+    /// Calls `f(TextureRef&)` for every texture the material samples.
+    template <typename F>
+    void forEachTexture(F&& f)
+    {
+        for (TextureRef* ref : {&baseColorTexture, &metallicRoughnessTexture, &normalTexture, &occlusionTexture,
+                                &emissiveTexture, &clearcoatTexture, &clearcoatRoughnessTexture, &clearcoatNormalTexture})
+            f(*ref);
+    }
 };
 
 struct Vertex {
@@ -150,11 +162,21 @@ struct Bounds {
     float radius() const { return empty() ? 0.0f : 0.5f * glm::length(max - min); }
 };
 
+/// KHR_materials_variants: primitive draws with `material` (-1: the default material) when
+/// variant `variant` (an index into Scene::variants) is chosen.
+struct VariantMapping {
+    int variant = 0;
+    int material = -1;
+};
+
 /// One draw: triangles with one material.
 struct Primitive {
     std::vector<Vertex> vertices;
     std::vector<uint32_t> indices; ///< empty = non-indexed (vertices are a triangle list)
     int material = -1;             ///< -1 = the default material
+    /// KHR_materials_variants: the primitive's material under each variant that maps it
+    /// (`material` under the others and when none is chosen).
+    std::vector<VariantMapping> variants;
     bool hasTangents = false;      ///< tangents came from the file or were generated
     bool hasColors = false;
     Bounds bounds;
@@ -307,6 +329,9 @@ struct Scene {
     std::vector<BillboardGroup> billboards;
     std::vector<Skin> skins;
     std::vector<Animation> animations;
+    /// KHR_materials_variants: the names of the material variants, in file order (appended
+    /// scenes share a variant of the same name).
+    std::vector<std::string> variants;
     /// Warnings met while loading (missing textures...), already logged.
     std::vector<std::string> warnings;
 

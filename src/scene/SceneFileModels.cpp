@@ -75,7 +75,7 @@ Material defaultShapeMaterial(const std::string& name)
 const std::vector<std::string_view> kMaterialKeys = {"name", "baseColor", "metallic", "roughness", "emissive",
                                                      "emissiveStrength", "doubleSided", "alphaMode", "alphaCutoff", "blendMode",
                                                      "shading", "brdfD", "brdfG", "brdfF", "brdfDiffuse", "ior",
-                                                     "shininess", "sectorLight", "transmission", "thickness",
+                                                     "shininess", "sectorLight", "transmission", "thickness", "dispersion",
                                                      "attenuationDistance", "attenuationColor", "clearcoat",
                                                      "clearcoatRoughness"};
 
@@ -104,6 +104,7 @@ void applyMaterialKeys(const Object& object, Material& material)
     // Transmission and volume (KHR_materials_transmission, KHR_materials_volume).
     material.transmissionFactor = object.unitInterval("transmission").value_or(material.transmissionFactor);
     material.thickness = object.nonNegative("thickness").value_or(material.thickness);
+    material.dispersion = object.nonNegative("dispersion").value_or(material.dispersion); // KHR_materials_dispersion
     material.attenuationDistance = object.nonNegative("attenuationDistance").value_or(material.attenuationDistance);
     if (const auto color = object.color("attenuationColor")) {
         if (glm::any(glm::greaterThan(*color, glm::vec3(1.0f)))) object.fail("attenuationColor", "must be between 0 and 1");

@@ -129,6 +129,22 @@ void resolvePostSettings(const scene::SceneDocument& document, const FrameOption
     }
 }
 
+/// `name`'s index among `names` (a name, else a decimal index), -1 for "none"; Error naming
+/// `flag` and listing what there is otherwise.
+int chooseByNameOrIndex(const std::vector<std::string>& names, const std::string& name, std::string_view flag,
+                        std::string_view kind)
+{
+    if (name == "none") return -1;
+    for (size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return int(i);
+    const bool digits = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (digits && name.size() < 9 && size_t(std::stoi(name)) < names.size()) return std::stoi(name);
+    std::string available = "the scene has none";
+    for (size_t i = 0; i < names.size(); ++i)
+        available = fmt::format("{}{} '{}'", i ? available + ", " : std::string("the scene has: "), i, names[i]);
+    throw Error("{}: no {} '{}' ({})", flag, kind, name, available);
+}
+
 } // namespace
 
 AnimationChoice resolveAnimation(const scene::Scene& scene, const FrameOptions& options)
@@ -138,29 +154,24 @@ AnimationChoice resolveAnimation(const scene::Scene& scene, const FrameOptions& 
         if (!(*options.time >= 0.0f)) throw Error("--time must be 0 or more seconds (got {})", *options.time);
         choice.seconds = *options.time;
     }
-    const auto& animations = scene.animations;
-    auto available = [&] {
-        if (animations.empty()) return std::string("the scene has none");
-        std::string list;
-        for (size_t i = 0; i < animations.size(); ++i)
-            list += fmt::format("{}{} '{}'", i ? ", " : "the scene has: ", i, animations[i].name);
-        return list;
-    };
     if (options.animation) {
-        const std::string& name = *options.animation;
-        if (name == "none") return {-1, choice.seconds};
-        for (size_t i = 0; i < animations.size(); ++i)
-            if (animations[i].name == name) return {int(i), choice.seconds};
-        const bool digits = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) { return c >= '0' && c <= '9'; });
-        if (digits && name.size() < 9 && size_t(std::stoi(name)) < animations.size()) return {std::stoi(name), choice.seconds};
-        throw Error("--animation: no animation '{}' ({})", name, available());
+        std::vector<std::string> names;
+        for (const scene::Animation& animation : scene.animations) names.push_back(animation.name);
+        choice.index = chooseByNameOrIndex(names, *options.animation, "--animation", "animation");
+        return choice;
     }
-    if (animations.empty()) {
+    if (scene.animations.empty()) {
         if (options.time) log::warn("--time {} is ignored: the scene has no animations", *options.time);
         return choice;
     }
     choice.index = 0;
     return choice;
+}
+
+int resolveVariant(const scene::Scene& scene, const FrameOptions& options)
+{
+    if (!options.variant) return -1;
+    return chooseByNameOrIndex(scene.variants, *options.variant, "--variant", "material variant");
 }
 
 render::FrameSettings resolveSettings(const scene::SceneDocument& document, const FrameOptions& options)

@@ -55,6 +55,7 @@ struct FrameOptions {
     std::optional<int> lights;                ///< the many-lights scene's count (--lights)
     std::optional<float> time;                ///< seconds into the animation (--time)
     std::optional<std::string> animation;     ///< its name or index, or none (--animation)
+    std::optional<std::string> variant;       ///< KHR_materials_variants: its name or index, or none (--variant)
 };
 
 /// The pose a frame shows: animation `index` of the scene (-1: none, the rest pose) at `seconds`.
@@ -66,6 +67,10 @@ struct AnimationChoice {
 /// animation, at 0 s. Throws Error naming the flag: a negative time, an animation the scene
 /// does not have (listing those it has). --time on a scene without animations is a warning.
 AnimationChoice resolveAnimation(const scene::Scene& scene, const FrameOptions& options);
+/// --variant NAME|INDEX|none over the scene's KHR_materials_variants: the variant's index, or
+/// -1 (none: the materials the primitives name, the default). Throws Error naming the flag for
+/// a variant the scene does not have (listing those it has).
+int resolveVariant(const scene::Scene& scene, const FrameOptions& options);
 
 /// `name` is a .gltf/.glb/.json path, or a built-in scene (scene/BuiltinScenes.h); empty = demo.
 /// `lights`: the many-lights scene's count.

@@ -22,6 +22,7 @@ constexpr int kShadowFilterShift = 35, kShadowTapsShift = 37;
 // Material features above the first nine bits, and the transparency choices.
 constexpr uint64_t kBlendTransparent = uint64_t(1) << 39, kTransmission = uint64_t(1) << 40, kOit = uint64_t(1) << 41;
 constexpr uint64_t kClearcoat = uint64_t(1) << 42;
+constexpr uint64_t kDispersion = uint64_t(1) << 46;
 constexpr int kDebugShift = 16, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
               kDiffuseShift = 30;
 constexpr uint64_t field(int shift, int bits) { return ((uint64_t(1) << bits) - 1) << shift; }
@@ -94,6 +95,7 @@ constexpr std::array kTable = {
     VariantDefine{kBlendTransparent, kBlendTransparent, "BLEND_TRANSPARENT", K::MaterialFeature},
     VariantDefine{kTransmission, kTransmission, "TRANSMISSION", K::MaterialFeature},
     VariantDefine{kClearcoat, kClearcoat, "CLEARCOAT", K::MaterialFeature},
+    VariantDefine{kDispersion, kDispersion, "DISPERSION", K::MaterialFeature},
     VariantDefine{kOit, kOit, "OIT", K::FrameFeature},
 };
 static_assert((kFeatureMask & (kIbl | kIblImportance | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
@@ -125,7 +127,11 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
         // Only the physically based model has lobes to blend apart and a dielectric to refract
         // through; a Doom frame's indices and the debug views have neither.
         if (features & SPECULA_MATERIAL_BLEND_TRANSPARENT) key |= kBlendTransparent;
-        if ((features & SPECULA_MATERIAL_TRANSMISSION) && !doomIndexed && !isMaterialDebugView(debugView)) key |= kTransmission;
+        if ((features & SPECULA_MATERIAL_TRANSMISSION) && !doomIndexed && !isMaterialDebugView(debugView)) {
+            key |= kTransmission;
+            // KHR_materials_dispersion: three refractions, one per channel, where a volume has it.
+            if (features & SPECULA_MATERIAL_DISPERSION) key |= kDispersion;
+        }
         // KHR_materials_clearcoat: the layer, in the lit frame only.
         if ((features & SPECULA_MATERIAL_CLEARCOAT) && !doomIndexed && !isMaterialDebugView(debugView)) key |= kClearcoat;
     }

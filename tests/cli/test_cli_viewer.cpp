@@ -473,3 +473,39 @@ TEST(CliViewer, AnimationTimelinePosesTheScene)
     EXPECT_NE(bad.exitCode, 0);
     EXPECT_NE(bad.err.find("bad.txt:1: --animation: no animation 'walk' (the scene has: 0 'bend', 1 'lift')"), std::string::npos) << bad.err;
 }
+
+// KHR_materials_variants in the viewer: the script's `variant` (as the Materials panel's combo)
+// switches the scene's materials, a viewer started with --variant shows that variant's frame,
+// `variant none` goes back to the file's, and an unknown variant is the script's one-line error.
+TEST(CliViewer, MaterialVariantSwitchesTheMaterials)
+{
+    ASSERT_TRUE(haveDisplay()) << "no display: run through scripts/test.sh, which uses Xvfb (a window test must not skip)";
+    const std::string dir = tempDir("viewer-variants");
+    const std::string model = std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/variants.gltf";
+    std::ofstream(dir + "/script.txt") << "frames 1\n"
+                                          "screenshot " << dir << "/plain.png\n"
+                                          "variant Green\n"
+                                          "frames 1\n"
+                                          "screenshot " << dir << "/green.png\n"
+                                          "variant none\n"
+                                          "frames 1\n"
+                                          "screenshot " << dir << "/back.png\n"
+                                          "panel materials open\n"
+                                          "screenshot-window " << dir << "/window.png\n"
+                                          "expect-no-error\n";
+    const std::string size = " --width 200 --height 150 --env none --no-cache";
+    const auto r = runCli("view " + model + size + " --script " + dir + "/script.txt");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto started = runCli("view " + model + size + " --variant 0 --frames 2 --screenshot " + dir + "/started.png");
+    ASSERT_EQ(started.exitCode, 0) << started.err;
+    const auto plain = specula::readPng(dir + "/plain.png");
+    const auto green = specula::readPng(dir + "/green.png");
+    EXPECT_GT(meanDifference(plain, green), 2.0) << "the variant did not change the materials";
+    EXPECT_LT(meanDifference(plain, specula::readPng(dir + "/back.png")), 0.01) << "variant none is not the file's materials";
+    EXPECT_LT(meanDifference(green, specula::readPng(dir + "/started.png")), 0.01) << "--variant 0 is not the scripted Green";
+
+    std::ofstream(dir + "/bad.txt") << "variant Purple\n";
+    const auto bad = runCli("view " + model + size + " --script " + dir + "/bad.txt");
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_NE(bad.err.find("bad.txt:1: --variant: no material variant 'Purple'"), std::string::npos) << bad.err;
+}

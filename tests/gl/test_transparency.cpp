@@ -520,3 +520,106 @@ TEST_F(GlTest, TransparencyShadowCastersFollowTheRule)
     const render::DrawList opaque = render::DrawList::build(gpu, view, viewProjection, render::DrawFilter::Opaque, programs);
     EXPECT_EQ(opaque.commands().size(), 1u);
 }
+
+// -- dispersion ------------------------------------------------------------------------------
+
+// KHR_materials_dispersion: a volume slab (thickness 1, ior 1.5, dispersion 20: V_d = 1, far
+// beyond any glass, so that the channels part by a few pixels) tilted 35° about the vertical axis,
+// in front of an emissive backdrop whose red and green rise and whose blue falls from left to
+// right. The CPU traces each pixel's ray to the slab and refracts it (Snell's law, exactly) with
+// each channel's own index of refraction, the extension's n = ior ∓ (ior − 1) × 0.025 ×
+// dispersion (green: the ior), leaves the volume after its thickness and reads that channel of
+// the frame without the slab where the exit point projects (bilinear at pixel centres); times
+// 1 − F(n·v), Schlick with F0 = 0.04. Tolerance: 1 % + 2e-3 as the other transmission tests.
+// Broken on purpose (the DISPERSION variant reading green's ray for every channel): red is off by
+// 7.7 % at worst (0.297 for 0.322), far outside. Dispersion 0 must match green's ray in all three.
+TEST_F(GlTest, TransparencyDispersionRefractsEachChannelWithItsOwnIor)
+{
+    constexpr int kWide = 128;
+    scene::Scene reference;
+    {
+        scene::Material m;
+        m.name = "gradient backdrop";
+        m.baseColorFactor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        m.roughnessFactor = 1.0f;
+        m.emissiveFactor = glm::vec3(2.0f);
+        scene::Image image;
+        image.name = "gradient";
+        image.width = 64;
+        image.height = 1;
+        for (int x = 0; x < 64; ++x) {
+            const uint8_t texel[4] = {uint8_t(60 + 3 * x), uint8_t(20 + 2 * x), uint8_t(250 - 3 * x), 255};
+            image.pixels.insert(image.pixels.end(), texel, texel + 4);
+        }
+        reference.images.push_back(std::move(image));
+        reference.samplers.push_back(scene::Sampler{});
+        m.emissiveTexture.image = 0;
+        m.emissiveTexture.sampler = 0;
+        scene::addShape(reference, scene::makePlane(4.0f), m, facingZ(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -2.0f))),
+                        "backdrop");
+    }
+    const double ior = 1.5, thickness = 1.0;
+    const glm::mat4 slab = glm::rotate(glm::mat4(1.0f), glm::radians(35.0f), glm::vec3(0, 1, 0)) *
+                           glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1, 0, 0));
+    const render::View view = frontView();
+    render::FrameSettings settings = exactSettings();
+    settings.width = settings.height = kWide;
+    const ImageFloat behind = renderScene(reference, view, settings);
+    auto bilinear = [&](glm::dvec2 uv, int channel) {
+        const double fx = uv.x * kWide - 0.5, fy = (1.0 - uv.y) * kWide - 0.5; // row 0 at the top
+        const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+        const double ax = fx - x0, ay = fy - y0;
+        auto at = [&](int x, int y) { return pixel(behind, std::clamp(x, 0, kWide - 1), std::clamp(y, 0, kWide - 1))[channel]; };
+        return (1 - ay) * ((1 - ax) * at(x0, y0) + ax * at(x0 + 1, y0)) + ay * ((1 - ax) * at(x0, y0 + 1) + ax * at(x0 + 1, y0 + 1));
+    };
+    const glm::dmat4 viewProjection = glm::dmat4(view.projection * view.view);
+    const dvec3 normal = glm::normalize(dvec3(glm::dmat4(slab)[1]));
+
+    for (double dispersion : {20.0, 0.0}) {
+        SCOPED_TRACE(dispersion);
+        scene::Scene s = reference;
+        scene::Material m = glass(1.0f, float(ior), float(thickness));
+        m.dispersion = float(dispersion);
+        scene::addShape(s, scene::makePlane(1.2f), m, slab, "dispersive slab");
+        const ImageFloat image = renderScene(s, view, settings);
+        const double halfSpread = (ior - 1.0) * 0.025 * dispersion;
+        const dvec3 iors(std::max(ior - halfSpread, 1.0), ior, ior + halfSpread);
+        int tested = 0;
+        double worst = 0.0, redShift = 0.0;
+        for (int y = 0; y < kWide; ++y)
+            for (int x = 0; x < kWide; ++x) {
+                const Ray ray = pixelRay(view, x, y, kWide, kWide);
+                const auto hit = hitQuad(ray, glm::dmat4(slab), 0.55);
+                if (!hit) continue;
+                const dvec3 v = -ray.direction;
+                const double NoV = glm::dot(normal, v);
+                const double F = 0.04 + 0.96 * std::pow(1.0 - NoV, 5.0);
+                // Where a ray refracted with index n leaves the volume, on screen.
+                auto exitUv = [&](double n) {
+                    const dvec3 direction = glm::refract(ray.direction, normal, 1.0 / n);
+                    const glm::dvec4 clip = viewProjection * glm::dvec4(*hit + glm::normalize(direction) * thickness, 1.0);
+                    return glm::dvec2(clip) / clip.w * 0.5 + 0.5;
+                };
+                bool inside = true;
+                dvec3 want(0.0);
+                for (int c = 0; c < 3; ++c) {
+                    const glm::dvec2 uv = exitUv(iors[c]);
+                    inside = inside && uv.x > 0.02 && uv.x < 0.98 && uv.y > 0.02 && uv.y < 0.98;
+                    want[c] = (1.0 - F) * bilinear(uv, c);
+                }
+                redShift = std::max(redShift, std::abs(exitUv(iors[0]).x - exitUv(ior).x) * kWide);
+                if (!inside) continue;
+                ++tested;
+                const dvec3 got = pixel(image, x, y);
+                for (int c = 0; c < 3; ++c) {
+                    worst = std::max(worst, std::abs(got[c] - want[c]) / want[c]);
+                    ASSERT_LE(std::abs(got[c] - want[c]), kTransmissionRelative * want[c] + kAbsolute)
+                        << "pixel (" << x << ", " << y << ") channel " << c << ": " << got[c] << ", expected " << want[c]
+                        << " (ior " << iors[c] << ")";
+                }
+            }
+        EXPECT_GT(tested, 1500);
+        std::printf("dispersion %.0f: %d pixels, worst %.3f %% of the expected value, red's exit up to %.2f px from green's\n",
+                    dispersion, tested, 100.0 * worst, redShift);
+    }
+}

@@ -1565,3 +1565,91 @@ TEST(GltfExtensions, ClearcoatDefaultsTexCoordAndTransform)
     EXPECT_EQ(coated.clearcoatNormalTexture.transform.scale, glm::vec2(2.0f));
     EXPECT_TRUE(scene.meshes.at(0).primitives.at(0).hasTangents);
 }
+
+// tests/assets/gltf/variants.gltf (make_variants.py; the Khronos validator: 0 errors, 0 warnings):
+// KHR_materials_variants' names and each primitive's mappings, one mapping naming two variants.
+TEST(GltfExtensions, VariantNamesAndMappings)
+{
+    const Scene scene = loadGltf(kTestAssets / "variants.gltf");
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    EXPECT_EQ(scene.variants, (std::vector<std::string>{"Green", "Blue", "Hidden"}));
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    auto mappings = [&](size_t mesh) {
+        std::vector<std::pair<int, int>> out;
+        for (const VariantMapping& m : scene.meshes[mesh].primitives.at(0).variants) out.push_back({m.variant, m.material});
+        return out;
+    };
+    EXPECT_EQ(scene.meshes[0].primitives[0].material, 0);
+    EXPECT_EQ(mappings(0), (std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {2, 3}}));
+    EXPECT_EQ(scene.meshes[1].primitives[0].material, 2);
+    EXPECT_EQ(mappings(1), (std::vector<std::pair<int, int>>{{0, 1}, {1, 1}}));
+}
+
+TEST(GltfExtensions, VariantErrorsAreOneLineAndAVariantsNormalMapMakesTangents)
+{
+    auto load = [](const json& rootExtension, const json& primitiveExtension, bool normalMapped = false) {
+        TempDir dir;
+        GltfBuilder b;
+        auto& p = b.primitive({{"POSITION", b.vec3(kTriangle)}, {"NORMAL", b.vec3({0, 0, 1, 0, 0, 1, 0, 0, 1})},
+                               {"TEXCOORD_0", b.vec2({0, 0, 1, 0, 0, 1})}});
+        p["material"] = 0;
+        if (!primitiveExtension.is_null()) p["extensions"]["KHR_materials_variants"] = primitiveExtension;
+        b.doc["materials"] = {json::object(), json::object()};
+        if (normalMapped) {
+            b.doc["images"] = {{{"uri", "n.png"}}};
+            b.doc["textures"] = {{{"source", 0}}};
+            b.doc["materials"][1]["normalTexture"] = {{"index", 0}};
+            const std::vector<uint8_t> png = makePng(1, 1, {128, 128, 255}, false);
+            dir.write("n.png", std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+        }
+        if (!rootExtension.is_null()) b.doc["extensions"]["KHR_materials_variants"] = rootExtension;
+        b.doc["extensionsUsed"] = json::array({"KHR_materials_variants"});
+        return loadGltf(b.write(dir, "v.gltf"));
+    };
+    const json two = {{"variants", {{{"name", "a"}}, {{"name", "b"}}}}};
+    // A variant's normal-mapped material asks for tangents like the primitive's own would.
+    const Scene ok = load(two, {{"mappings", {{{"material", 1}, {"variants", json::array({1})}}}}}, true);
+    EXPECT_TRUE(ok.meshes.at(0).primitives.at(0).hasTangents);
+    EXPECT_FALSE(load(two, nullptr, false).meshes.at(0).primitives.at(0).hasTangents);
+
+    auto error = [&](const json& root, const json& primitive) {
+        return errorOf([&] { load(root, primitive); });
+    };
+    EXPECT_NE(error({{"variants", 3}}, nullptr).find("KHR_materials_variants has no \"variants\" array"), std::string::npos);
+    const std::string unnamed = error({{"variants", json::array({{{"name", 3}}})}}, nullptr);
+    EXPECT_NE(unnamed.find("variant 0 has no name"), std::string::npos) << unnamed;
+    EXPECT_NE(error(two, {{"mappings", {{{"material", 1}, {"variants", json::array({2})}}}}}).find("refers to variant 2, which is out of range (the file has 2)"),
+              std::string::npos);
+    EXPECT_NE(error(two, {{"mappings", {{{"material", 1}, {"variants", json::array({-1})}}}}}).find("out of range"), std::string::npos);
+    EXPECT_NE(error(two, {{"mappings", {{{"material", 5}, {"variants", json::array({0})}}}}}).find("refers to material 5, which is out of range"),
+              std::string::npos);
+    EXPECT_NE(error(two, {{"mappings", {{{"variants", json::array({0})}}}}}).find("has no material"), std::string::npos);
+    EXPECT_NE(error(two, {{"mappings", {{{"material", 1}}}}}).find("has no \"variants\" array"), std::string::npos);
+    EXPECT_NE(error(two, {{"mappings", {{{"material", 1}, {"variants", json::array({0})}}, {{"material", 0}, {"variants", json::array({0})}}}}})
+                  .find("maps variant 0 a second time"),
+              std::string::npos);
+    EXPECT_NE(error(two, {{"mappings", "x"}}).find("has no \"mappings\" array"), std::string::npos);
+    // A mapping with no variants list at the root: every index is out of range.
+    EXPECT_NE(error(nullptr, {{"mappings", {{{"material", 1}, {"variants", json::array({0})}}}}}).find("(the file has 0)"), std::string::npos);
+}
+
+// KHR_materials_dispersion: the value as given (20 / V_d), 0 by default and for nonsense.
+TEST(GltfExtensions, DispersionValue)
+{
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}});
+    auto material = [](json dispersion) {
+        return json{{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                                    {"KHR_materials_volume", {{"thicknessFactor", 0.5}}},
+                                    {"KHR_materials_dispersion", std::move(dispersion)}}}};
+    };
+    b.doc["materials"] = {material({{"dispersion", 0.36}}), material({{"dispersion", -2.0}}), material({{"other", 1}})};
+    b.doc["extensionsUsed"] = json::array({"KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_dispersion"});
+    const Scene scene = loadGltf(b.write(dir, "dispersion.gltf"));
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    EXPECT_FLOAT_EQ(scene.materials.at(0).dispersion, 0.36f);
+    EXPECT_EQ(scene.materials.at(1).dispersion, 0.0f);
+    EXPECT_EQ(scene.materials.at(2).dispersion, 0.0f);
+    EXPECT_FLOAT_EQ(scene.materials.at(0).thickness, 0.5f);
+}

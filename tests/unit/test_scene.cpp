@@ -114,6 +114,39 @@ TEST(Scene, AppendShiftsIndices)
     }
 }
 
+// Every texture of an appended material (the clearcoat layer's too) follows its images, and
+// material variants of the same name become one, their mappings following their materials.
+TEST(Scene, AppendShiftsTexturesAndMergesVariantsByName)
+{
+    auto model = [](std::vector<std::string> variants) {
+        Scene s;
+        s.images.resize(2);
+        Material m;
+        m.baseColorTexture.image = 0;
+        m.clearcoatNormalTexture.image = 1;
+        s.materials = {m, Material{}};
+        Primitive p;
+        p.vertices.resize(3);
+        p.material = 0;
+        for (int v = 0; v < int(variants.size()); ++v) p.variants.push_back({v, 1});
+        s.meshes.push_back({"mesh", {p}, {}});
+        s.variants = std::move(variants);
+        return s;
+    };
+    Scene a = model({"red", "blue"});
+    a.append(model({"blue", "green"}));
+    EXPECT_EQ(a.variants, (std::vector<std::string>{"red", "blue", "green"}));
+    const Material& second = a.materials.at(2);
+    EXPECT_EQ(second.baseColorTexture.image, 2);
+    EXPECT_EQ(second.clearcoatNormalTexture.image, 3);
+    const Primitive& appended = a.meshes.at(1).primitives.at(0);
+    EXPECT_EQ(appended.material, 2);
+    ASSERT_EQ(appended.variants.size(), 2u);
+    EXPECT_EQ(appended.variants[0].variant, 1); // its "blue" is the first model's
+    EXPECT_EQ(appended.variants[0].material, 3);
+    EXPECT_EQ(appended.variants[1].variant, 2); // "green" is new
+}
+
 TEST(Scene, LookRotationMapsMinusZToDirection)
 {
     for (const glm::vec3 d : {glm::vec3(1, 0, 0), glm::vec3(0, -1, 0), glm::vec3(0, 1, 0), glm::vec3(0.3f, -0.5f, 0.8f)}) {

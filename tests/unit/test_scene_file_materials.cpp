@@ -109,7 +109,7 @@ TEST(SceneFileMaterials, BlendModeAndTransmission)
         {"type": "sphere", "material": {"baseColor": [1, 1, 1, 0.1], "alphaMode": "blend", "blendMode": "transparent"}},
         {"type": "sphere", "material": {"alphaMode": "blend"}},
         {"type": "sphere", "material": {"transmission": 0.9, "ior": 1.45, "thickness": 0.2, "attenuationDistance": 0.5,
-                                        "attenuationColor": [0.9, 0.8, 0.7]}}],
+                                        "attenuationColor": [0.9, 0.8, 0.7], "dispersion": 0.33}}],
         "render": {"transparency": "oit"}})");
     ASSERT_EQ(d.scene.materials.size(), 3u);
     EXPECT_EQ(d.scene.materials[0].blendMode, BlendMode::Transparent);
@@ -117,6 +117,7 @@ TEST(SceneFileMaterials, BlendModeAndTransmission)
     const Material& glass = d.scene.materials[2];
     EXPECT_FLOAT_EQ(glass.transmissionFactor, 0.9f);
     EXPECT_FLOAT_EQ(glass.thickness, 0.2f);
+    EXPECT_FLOAT_EQ(glass.dispersion, 0.33f); // KHR_materials_dispersion
     EXPECT_FLOAT_EQ(glass.attenuationDistance, 0.5f);
     EXPECT_EQ(glass.attenuationColor, glm::vec3(0.9f, 0.8f, 0.7f));
     EXPECT_FLOAT_EQ(glass.ior.value_or(0.0f), 1.45f);
@@ -129,6 +130,7 @@ TEST(SceneFileMaterials, BlendModeAndTransmission)
     EXPECT_NE(error(R"({"alphaMode": "blend", "blendMode": "additive"})").find("blendMode"), std::string::npos);
     EXPECT_NE(error(R"({"transmission": 1.5})").find("transmission"), std::string::npos);
     EXPECT_NE(error(R"({"thickness": -1})").find("thickness"), std::string::npos);
+    EXPECT_NE(error(R"({"dispersion": -0.5})").find("dispersion"), std::string::npos);
     EXPECT_NE(error(R"({"attenuationColor": [2, 1, 1]})").find("attenuationColor"), std::string::npos);
     EXPECT_NE(test::sceneError(R"({"render": {"transparency": "depth-peeling"}})").find("transparency"), std::string::npos);
 }
