@@ -6,5 +6,5 @@ set -euo pipefail
 BUILD="${1:-build}"
 export SPECULA_SOAK_FRAMES="${SPECULA_SOAK_FRAMES:-100000}" SPECULA_SOAK_WARMUP="${SPECULA_SOAK_WARMUP:-1000}"
 start=$(date +%s)
-"$BUILD/specula_gl_tests" --gtest_filter='*Soak*'
+"$BUILD/tests/specula_gl_tests" --gtest_filter='*Soak*'
 echo "soak: $SPECULA_SOAK_FRAMES frames in $(( $(date +%s) - start )) s"
