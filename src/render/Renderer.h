@@ -44,8 +44,10 @@ enum class MaterialParameter {
     SectorLight,    ///< x, the Doom model's sector light level, 0–255
     ClearcoatFactor,    ///< x, KHR_materials_clearcoat factor (0 = no layer: the CLEARCOAT variant goes)
     ClearcoatRoughness, ///< x, the layer's perceptual roughness
+    SheenColor,         ///< rgb, KHR_materials_sheen colour factor (black = no sheen: the SHEEN variant goes)
+    SheenRoughness,     ///< x, the sheen's perceptual roughness
 };
-constexpr int kMaterialParameterCount = int(MaterialParameter::ClearcoatRoughness) + 1;
+constexpr int kMaterialParameterCount = int(MaterialParameter::SheenRoughness) + 1;
 
 /// How the specular lobe integrates image-based light (docs/ibl.md).
 enum class IblSpecular {
