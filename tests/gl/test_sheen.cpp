@@ -7,6 +7,10 @@
 // Punctual light on spheres and on a glTF quad whose sheen comes from textures (texCoord 1 and
 // KHR_texture_transform); the white furnace; the image-based sheen against a Monte Carlo
 // estimate of the lobe under an environment map.
+// Broken on purpose (2026-12-03), each failed: no albedo scaling (the spheres, and the furnace
+// at 1.42 L); Ashikhmin's V for the Charlie V (spheres 12-53 % off, the quad 20 %); the
+// image-based sheen without E (the furnace at 2.0 L, the Monte Carlo comparison 430 % off); the
+// debug view without E (0.94 off).
 #include "GlTestContext.h"
 #include "IblReference.h"
 #include "ImageProbe.h"
@@ -534,4 +538,41 @@ TEST_F(GlTest, SheenImageBasedLightMatchesAMonteCarloReference)
             }
         }
     }
+}
+
+TEST_F(GlTest, SheenDebugViewShowsColourTimesAlbedo)
+{
+    // --debug-view sheen: sheenColor x E(n.v) per pixel, written sRGB-decoded (the output's value
+    // x 255, docs/materials.md), so the radiance read back is srgbToLinear(c E). Within 0.01 of
+    // the value (the table's bilinear lookup and half floats); black on a material without sheen.
+    const dvec3 color(1.0, 0.5, 0.25);
+    const double roughness = 0.6;
+    const SheenAlbedo albedo(roughness);
+    render::Renderer renderer;
+    render::FrameSettings settings;
+    settings.debugView = DebugView::Sheen;
+    const test::SphereRender r =
+        test::renderSpheres(renderer, {toMaterial({dvec3(0.5), 0.0, 0.5, color, roughness}), toMaterial({dvec3(0.5), 0.0, 0.5, dvec3(0.0), 0.0})},
+                            settings);
+    auto toValue = [](double linear) { return linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055; };
+    int tested = 0;
+    double worst = 0.0;
+    for (int y = 0; y < test::kSize; y += 2)
+        for (int x = 0; x < test::kSize; x += 2) {
+            glm::vec3 nf;
+            if (!test::sphereNormal(x, y, nf)) continue;
+            const dvec3 n(nf);
+            const double NoV = glm::dot(n, test::viewVector(0, 2, n));
+            if (NoV < 0.1) continue;
+            ++tested;
+            const glm::vec3 got = test::pixel(r.image, x, y), bare = test::pixel(r.image, test::kSize + x, y);
+            for (int ch = 0; ch < 3; ++ch) {
+                const double expected = color[ch] * albedo.at(NoV);
+                EXPECT_NEAR(toValue(got[ch]), expected, 0.01) << "pixel (" << x << ", " << y << ") channel " << ch;
+                EXPECT_EQ(bare[ch], 0.0f);
+                worst = std::max(worst, std::abs(toValue(got[ch]) - expected));
+            }
+        }
+    EXPECT_GT(tested, 400);
+    std::printf("sheen debug view: %d pixels, worst |GPU - CPU| %.4f\n", tested, worst);
 }
