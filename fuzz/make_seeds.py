@@ -77,6 +77,14 @@ sparse["accessors"].append({"componentType": 5126, "count": 3, "type": "VEC3",
                                        "values": {"bufferView": 0}}})
 sparse["meshes"][0]["primitives"].append({"attributes": {"POSITION": 4}, "mode": 5})
 write("seeds/gltf/sparse.gltf", json.dumps(sparse))
+# KHR_materials_sheen: factors and both textures, one through texCoord 1 and a transform.
+sheen = triangle_gltf("buffer.bin", {"uri": "texture.png"})
+sheen["extensionsUsed"].append("KHR_materials_sheen")
+sheen["materials"][0]["extensions"] = {"KHR_materials_sheen": {
+    "sheenColorFactor": [1, 0.5, 0.2], "sheenRoughnessFactor": 0.4,
+    "sheenColorTexture": {"index": 0, "texCoord": 1, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0]}}},
+    "sheenRoughnessTexture": {"index": 0}}}
+write("seeds/gltf/sheen.gltf", json.dumps(sheen))
 
 def glb(document, binary):
     text = json.dumps(document).encode()

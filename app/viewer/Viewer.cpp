@@ -377,6 +377,8 @@ void Viewer::setMaterialParameter(int index, render::MaterialParameter parameter
     case render::MaterialParameter::ClearcoatFactor: m.clearcoatFactor = std::clamp(value.x, 0.0f, 1.0f); break;
     case render::MaterialParameter::ClearcoatRoughness: m.clearcoatRoughnessFactor = std::clamp(value.x, 0.0f, 1.0f); break;
     case render::MaterialParameter::Dispersion: m.dispersion = std::max(value.x, 0.0f); break;
+    case render::MaterialParameter::SheenColor: m.sheenColorFactor = glm::clamp(glm::vec3(value), 0.0f, 1.0f); break;
+    case render::MaterialParameter::SheenRoughness: m.sheenRoughnessFactor = std::clamp(value.x, 0.0f, 1.0f); break;
     case render::MaterialParameter::PhongSpecular: // the classic ks: only in the record
     case render::MaterialParameter::SpecularColor: break; // colour × ior: setMaterialIor
     }

@@ -282,6 +282,11 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         return 0;
     }
     if (a == "material-dispersion") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Dispersion, glm::vec4(w.number(2))); return 0; }
+    if (a == "material-sheen") {
+        viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::SheenColor, glm::vec4(w.vec3(2), 0.0f));
+        if (w.size() > 5) viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::SheenRoughness, glm::vec4(w.number(5)));
+        return 0;
+    }
     if (a == "material-metallic") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Metallic, glm::vec4(w.number(2))); return 0; }
     if (a == "material-emissive") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Emissive, glm::vec4(w.vec3(2), 0.0f)); return 0; }
     if (a == "material-ior") { viewer.setMaterialIor(w.integer(1), w.number(2)); return 0; }

@@ -356,6 +356,11 @@ void materialsPanel(Viewer& viewer)
     ImGui::TextDisabled("KHR_materials_dispersion (volumes)");
     float dispersion = value(MaterialParameter::Dispersion).x;
     if (ImGui::SliderFloat("dispersion (20/V)", &dispersion, 0.0f, 20.0f)) set(MaterialParameter::Dispersion, glm::vec4(dispersion));
+    ImGui::TextDisabled("KHR_materials_sheen");
+    glm::vec4 sheenColor = value(MaterialParameter::SheenColor);
+    if (ImGui::ColorEdit3("sheen colour", &sheenColor.x)) set(MaterialParameter::SheenColor, sheenColor);
+    float sheenRoughness = value(MaterialParameter::SheenRoughness).x;
+    if (ImGui::SliderFloat("sheen roughness", &sheenRoughness, 0.0f, 1.0f)) set(MaterialParameter::SheenRoughness, glm::vec4(sheenRoughness));
     ImGui::Separator();
     ImGui::TextDisabled("Phong, Blinn-Phong, Gouraud, flat");
     glm::vec4 ks = value(MaterialParameter::PhongSpecular);
@@ -392,6 +397,8 @@ void brdfPanel(Viewer& viewer)
         material.clearcoat = value(MaterialParameter::ClearcoatFactor).x;
         material.clearcoatRoughness = value(MaterialParameter::ClearcoatRoughness).x;
     }
+    material.sheenColor = glm::dvec3(glm::vec3(value(MaterialParameter::SheenColor)));
+    material.sheenRoughness = value(MaterialParameter::SheenRoughness).x;
     const render::FrameSettings& settings = viewer.settings();
     const render::ResolvedShading shading =
         render::resolveShading(settings.materialOverride, settings.brdfGeometry, render::packShading(renderer.materialShading(m)));
@@ -419,6 +426,8 @@ void brdfPanel(Viewer& viewer)
         ImGui::PlotLines("V = G/(4 NoL NoV)", curves.v.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
         ImGui::PlotLines("F (luminance)", curves.f.data(), n, 0, nullptr, 0.0f, 1.0f, ImVec2(0, 60));
         ImGui::PlotLines("f x NoL", curves.whole.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        if (!curves.sheen.empty())
+            ImGui::PlotLines("sheen x NoL (Charlie)", curves.sheen.data(), int(curves.sheen.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
         break;
     }
 }

@@ -8,7 +8,7 @@
 #if defined(DEBUG_VIEW_BASE_COLOR) || defined(DEBUG_VIEW_NORMAL) || defined(DEBUG_VIEW_ROUGHNESS) || \
     defined(DEBUG_VIEW_METALLIC) || defined(DEBUG_VIEW_OCCLUSION) || defined(DEBUG_VIEW_EMISSIVE) || \
     defined(DEBUG_VIEW_BRDF_D) || defined(DEBUG_VIEW_BRDF_G) || defined(DEBUG_VIEW_BRDF_F) || defined(DEBUG_VIEW_CASCADES) || \
-    defined(DEBUG_VIEW_LIGHT_COUNT)
+    defined(DEBUG_VIEW_LIGHT_COUNT) || defined(DEBUG_VIEW_SHEEN)
 #define DEBUG_VIEW
 #endif
 
@@ -58,6 +58,14 @@ vec3 debugViewValue(vec3 baseColor, float metallic, float perceptualRoughness, v
     return debugBytes(vec3(occlusion));
 #elif defined(DEBUG_VIEW_EMISSIVE)
     return emissive;
+#elif defined(DEBUG_VIEW_SHEEN)
+#if defined(SHEEN)
+    // What the sheen lobe reflects of light from every direction, sheen colour x E(n.v).
+    SheenLayer s = makeSheen(max(dot(n, v), 1e-4));
+    return debugBytes(s.color * s.albedo);
+#else
+    return vec3(0.0);
+#endif
 #elif defined(DEBUG_VIEW_LIGHT_COUNT)
     // The length of this point's light list (its cluster's, directional lights included), in
     // the heat map's bins (shared/ClusterData.h; the legend is render/passes/DebugViewPass's).

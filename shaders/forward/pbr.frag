@@ -4,7 +4,7 @@
 // Material features are compile-time variants (see Renderer's variant key): HAS_*_TEXTURE,
 // VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND (premultiplied output; BLEND_TRANSPARENT: specular and
 // emission unscaled by alpha), TRANSMISSION (forward/transmission.glsl), CLEARCOAT
-// (forward/clearcoat.glsl), DOUBLE_SIDED; OIT
+// (forward/clearcoat.glsl), SHEEN (forward/sheen.glsl), DOUBLE_SIDED; OIT
 // (weighted blended transparency's two targets); per frame, SSAO, and DOOM_INDEXED (a
 // Doom frame: with SHADING_DOOM, the output is a palette index and a colour-map level, not a
 // colour; render/DoomPass). A material without a feature pays nothing for it; without
@@ -70,6 +70,9 @@ const float kHalfMax = 65504.0;
 #include "texture_uv.glsl"
 #if defined(CLEARCOAT)
 #include "clearcoat.glsl"
+#endif
+#if defined(SHEEN)
+#include "sheen.glsl"
 #endif
 #include "shading_models.glsl"
 #include "debug_views.glsl"
@@ -196,6 +199,10 @@ void main()
     ClearcoatLayer coat = makeClearcoat(geometricNormal, flip, v);
     vec3 coatLight = vec3(0.0); // the layer's own reflection, added over the dimmed base
 #endif
+#if defined(SHEEN)
+    SheenLayer sheen = makeSheen(NoV);
+    vec3 sheenLight = vec3(0.0); // the sheen lobe's reflection, added over the scaled base
+#endif
 
 #if defined(IBL) || defined(ENERGY_COMPENSATION)
     // Split-sum DFG terms of this draw's own D, G and F (the renderer binds the table baked for
@@ -237,6 +244,9 @@ void main()
         if (NoL <= 0.0) continue;
         illuminance *= shadowVisibility(light, vWorldPosition, n, l);
 #endif
+#if defined(SHEEN)
+        sheenLight += sheenPunctual(sheen, n, v, l, NoV, NoL) * illuminance;
+#endif
         vec3 diffuse, specular;
         evaluateBrdfLobes(surface, n, v, l, diffuse, specular);
         diffuseLight += diffuse * illuminance * NoL;
@@ -266,6 +276,10 @@ void main()
 #endif
     diffuseLight += diffuseIbl * occlusion * environment.params.x;
     specularLight += specularIbl * specularAo * environment.params.x;
+#if defined(SHEEN)
+    // The broad lobe is occluded as the diffuse one is.
+    sheenLight += sheenEnvironment(sheen, n, v, NoV) * occlusion * environment.params.x;
+#endif
 #if defined(CLEARCOAT)
     // The layer's lobe: its own prefiltered lookup along its own normal, at its roughness, and
     // its own split-sum albedo (F0 0.04, F90 1) from the same table.
@@ -292,6 +306,13 @@ void main()
     vec3 behind = transmittedRadiance(n, v, vWorldPosition, material.transmission.y, material.transmission.z, iblRoughness);
     vec3 transmitted = transmission * (1.0 - brdfF(surface, NoV)) * baseColor.rgb * behind;
     diffuseLight = diffuseLight * (1.0 - transmission) + transmitted;
+#endif
+
+#if defined(SHEEN)
+    // The base's lobes (transmitted light included) give up what the sheen reflects; emission
+    // is no part of the BRDF the extension scales. Then the sheen's own light, under any clearcoat.
+    diffuseLight *= sheen.scaling;
+    specularLight = specularLight * sheen.scaling + sheenLight;
 #endif
 
     vec3 emissive = materialEmissive();

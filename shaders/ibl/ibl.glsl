@@ -6,6 +6,9 @@
 layout(std140, binding = SPECULA_BINDING_ENVIRONMENT) uniform EnvironmentBlock { EnvironmentData environment; };
 layout(binding = SPECULA_UNIT_PREFILTERED) uniform samplerCube uPrefiltered;
 layout(binding = SPECULA_UNIT_IRRADIANCE) uniform samplerCube uIrradiance;
+// The environment cube with its box-filtered mips: sampled per pixel by ibl/importance.glsl
+// and by the sheen lobe (forward/sheen.glsl).
+layout(binding = SPECULA_UNIT_ENVIRONMENT_CUBE) uniform samplerCube uEnvironmentCube;
 
 vec3 toEnvironment(vec3 worldDirection)
 {

@@ -8,8 +8,6 @@
 // then integrates what the N samples leave between them and no sample pattern shows.
 #include "sampling.glsl"
 
-layout(binding = SPECULA_UNIT_ENVIRONMENT_CUBE) uniform samplerCube uEnvironmentCube;
-
 // Chosen by measurement against the Monte Carlo reference (docs/ibl.md, copper under
 // venice_1k, roughness 1): 32 samples 8.7 % mean error, 64 4.9 %, 128 3.1 %, 256 2.7 % (the
 // reference's own noise is about 3 % there); each doubling costs about 1.4× the forward pass.

@@ -24,6 +24,7 @@ SPECULA_SHARED_BEGIN
 #define SPECULA_MATERIAL_HAS_CLEARCOAT_NORMAL_TEXTURE 4096u // read at run time by the CLEARCOAT variant
 // Bits 16-30 of a material's feature word hold its shading choice (shading/ShadingVariant.h).
 #define SPECULA_MATERIAL_DISPERSION 0x80000000u // KHR_materials_dispersion above 0 on a volume
+#define SPECULA_MATERIAL_SHEEN 8192u            // KHR_materials_sheen colour factor above 0
 
 struct GpuMaterial {
     vec4 baseColorFactor;
@@ -32,8 +33,9 @@ struct GpuMaterial {
     vec4 alpha;           // x alpha cutoff
     uvec4 flags;          // x SPECULA_MATERIAL_* bits; y texCoord sets, 2 bits per texture
                           // (base colour, metallic-roughness, normal, occlusion, emissive,
-                          // clearcoat, clearcoat roughness, clearcoat normal)
-    vec4 uvTransform[16]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
+                          // clearcoat, clearcoat roughness, clearcoat normal, sheen colour,
+                          // sheen roughness; 13 slots in all across the material extensions)
+    vec4 uvTransform[26]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
     vec4 specular;        // KHR_materials_specular: rgb specularColorFactor, a specularFactor; rgb also
                           // carries KHR_materials_ior: x (F0(ior) / 0.04), so 0.04 x rgb is the dielectric F0
     vec4 phong;           // Phong, Blinn-Phong, Gouraud, flat: rgb dielectric specular colour ks,
@@ -44,10 +46,11 @@ struct GpuMaterial {
     vec4 attenuation;     // rgb KHR_materials_volume attenuation colour, w KHR_materials_dispersion (20 / V_d)
     vec4 clearcoat;       // KHR_materials_clearcoat: x clearcoatFactor, y clearcoatRoughnessFactor
                           // (perceptual), z clearcoat normal texture scale
+    vec4 sheen;           // KHR_materials_sheen: rgb sheenColorFactor (linear), a sheenRoughnessFactor (perceptual)
 };
 
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::GpuMaterial) == 26 * 16);
+static_assert(sizeof(specula::shared::GpuMaterial) == 37 * 16);
 #endif

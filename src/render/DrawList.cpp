@@ -79,6 +79,10 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
             state.bindTexture(SPECULA_UNIT_DFG, *program.dfg);
             state.bindSampler(SPECULA_UNIT_DFG, nullptr);
         }
+        if (program.sheenAlbedo) {
+            state.bindTexture(SPECULA_UNIT_SHEEN_ALBEDO, *program.sheenAlbedo);
+            state.bindSampler(SPECULA_UNIT_SHEEN_ALBEDO, nullptr);
+        }
         state.useProgram(*program.program);
         gl::PipelineDesc pipeline;
         pipeline.cull = m.doubleSided || options.shadowCasters ? gl::CullMode::None : gl::CullMode::Back;
@@ -92,9 +96,11 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
         }
         state.apply(pipeline);
         if (options.textures == MaterialTextures::All) {
-            // The clearcoat slots only for the variant that samples them.
-            const size_t slots = m.clearcoat ? size_t(TextureSlot::Count) : size_t(TextureSlot::Clearcoat);
-            for (size_t slot = 0; slot < slots; ++slot) {
+            // An extension's slots only for the variant that samples them.
+            for (size_t slot = 0; slot < size_t(TextureSlot::Count); ++slot) {
+                const bool clearcoatSlot = slot >= size_t(TextureSlot::Clearcoat) && slot <= size_t(TextureSlot::ClearcoatNormal);
+                const bool sheenSlot = slot == size_t(TextureSlot::SheenColor) || slot == size_t(TextureSlot::SheenRoughness);
+                if ((clearcoatSlot && !m.clearcoat) || (sheenSlot && !m.sheen)) continue;
                 const gl::Texture* texture = m.textures[slot];
                 const bool normal = slot == size_t(TextureSlot::Normal) || slot == size_t(TextureSlot::ClearcoatNormal);
                 if (!texture) texture = normal ? options.flatNormal : options.white;

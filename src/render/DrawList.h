@@ -48,6 +48,7 @@ struct DrawProgram {
     int normalMatrix = -1;
     const gl::Texture* dfg = nullptr;
     int receiveShadows = -1; ///< uReceiveShadows, set per draw from its DrawItem when present
+    const gl::Texture* sheenAlbedo = nullptr; ///< the SHEEN variant's E table (ImageBasedLighting::sheenAlbedo)
 };
 
 /// How a pass's draws bind their material.

@@ -102,6 +102,8 @@ int textureUnit(TextureSlot slot)
     case TextureSlot::Clearcoat: return SPECULA_UNIT_CLEARCOAT;
     case TextureSlot::ClearcoatRoughness: return SPECULA_UNIT_CLEARCOAT_ROUGHNESS;
     case TextureSlot::ClearcoatNormal: return SPECULA_UNIT_CLEARCOAT_NORMAL;
+    case TextureSlot::SheenColor: return SPECULA_UNIT_SHEEN_COLOR;
+    case TextureSlot::SheenRoughness: return SPECULA_UNIT_SHEEN_ROUGHNESS;
     default: return int(slot);
     }
 }
@@ -209,6 +211,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         gpu.transmission = glm::vec4(m.transmissionFactor, m.ior.value_or(1.5f), m.thickness, m.attenuationDistance);
         gpu.attenuation = glm::vec4(m.attenuationColor, m.dispersion);
         gpu.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughnessFactor, m.clearcoatNormalScale, 0.0f);
+        gpu.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughnessFactor);
         // Classic models' specular colour: mid grey, a plastic highlight (Phong 1975's ks).
         gpu.phong = glm::vec4(glm::vec3(0.5f), m.shininess);
         for (int slot = 0; slot < int(TextureSlot::Count); ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
@@ -233,6 +236,9 @@ GpuScene::GpuScene(const scene::Scene& scene)
             {m.clearcoatTexture, TextureSlot::Clearcoat, false, 0u},
             {m.clearcoatRoughnessTexture, TextureSlot::ClearcoatRoughness, false, 0u},
             {m.clearcoatNormalTexture, TextureSlot::ClearcoatNormal, false, SPECULA_MATERIAL_HAS_CLEARCOAT_NORMAL_TEXTURE},
+            // Read only by the SHEEN variant, which samples both always (white without one).
+            {m.sheenColorTexture, TextureSlot::SheenColor, true, 0u},
+            {m.sheenRoughnessTexture, TextureSlot::SheenRoughness, false, 0u},
         };
         for (const auto& s : slots) {
             if (!s.ref.valid()) continue;
@@ -254,6 +260,9 @@ GpuScene::GpuScene(const scene::Scene& scene)
         // A zero factor is no layer at all (the texture only scales the factor): no variant for it.
         binding.clearcoat = m.clearcoatFactor > 0.0f;
         if (binding.clearcoat) gpu.flags.x |= SPECULA_MATERIAL_CLEARCOAT;
+        // A black sheen colour is no sheen (the extension's words); the texture only scales it.
+        binding.sheen = glm::any(glm::greaterThan(m.sheenColorFactor, glm::vec3(0.0f)));
+        if (binding.sheen) gpu.flags.x |= SPECULA_MATERIAL_SHEEN;
         // The shading model and BRDF terms select the variant too (not read by the shaders).
         binding.features = gpu.flags.x | packShading(m.shading);
         gpuMaterials.push_back(gpu);
@@ -489,6 +498,13 @@ void GpuScene::setFeature(int material, uint32_t bit, bool on)
         mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
                                &mRecords[record].flags.x);
     }
+}
+
+void GpuScene::setSheen(int material, bool on)
+{
+    setFeature(material, SPECULA_MATERIAL_SHEEN, on);
+    for (size_t record = 0; record < mMaterials.size(); ++record)
+        if (mRecordMaterial[record] == material) mMaterials[record].sheen = on;
 }
 
 void GpuScene::writeMaterial(int material, size_t offset, size_t size, const void* data)

@@ -35,6 +35,7 @@ struct GpuPrimitive {
 enum class TextureSlot {
     BaseColor, MetallicRoughness, Normal, Occlusion, Emissive,
     Clearcoat, ClearcoatRoughness, ClearcoatNormal, ///< KHR_materials_clearcoat (CLEARCOAT variant only)
+    SheenColor = 8, SheenRoughness = 9,             ///< KHR_materials_sheen (SHEEN variant only)
     Count
 };
 /// The texture unit of each slot (shaders/shared/Bindings.h): the first five are units 0-4.
@@ -47,6 +48,7 @@ struct MaterialBinding {
     bool doubleSided = false;
     float transmission = 0.0f; ///< KHR_materials_transmission factor
     bool clearcoat = false;    ///< KHR_materials_clearcoat: the CLEARCOAT variant, whose units 19-21 are bound
+    bool sheen = false;        ///< KHR_materials_sheen: the SHEEN variant, whose units 22-23 are bound
     uint32_t features = 0; ///< SPECULA_MATERIAL_* bits: selects the shader variant
 };
 
@@ -96,6 +98,9 @@ public:
     /// Sets or clears feature bit `bit` (a SPECULA_MATERIAL_* that selects a variant) of
     /// `material` and its copies, in the variant key and the uploaded record.
     void setFeature(int material, uint32_t bit, bool on);
+    /// Sets or clears SPECULA_MATERIAL_SHEEN of `material` (and its copies): a black sheen is
+    /// no sheen, so its variant goes.
+    void setSheen(int material, bool on);
     /// Writes `size` bytes at `offset` within `material`'s record (and its copies'), in the
     /// CPU copy and in the buffer: no other byte of the buffer is written.
     void writeMaterial(int material, size_t offset, size_t size, const void* data);

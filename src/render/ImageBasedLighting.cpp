@@ -209,6 +209,7 @@ struct ImageBasedLighting::Impl {
     /// DFG tables by dfgKey of their variant, made on first use; the compute program is
     /// compiled only to bake (a table read from the disk cache needs none) and not kept.
     std::map<int, gl::Texture> luts;
+    gl::Texture sheenLut; ///< KHR_materials_sheen's E table, made on first use
     Sh9 sh{};
     std::vector<IrradianceSource> bright; // summed per pixel beside the irradiance cube
     bool has = false;
@@ -319,7 +320,8 @@ struct ImageBasedLighting::Impl {
     }
 
     /// Returns the milliseconds spent compiling the program (the rest of a bake is the dispatch).
-    double bakeLut(gl::State& state, gl::Texture& lut, const std::vector<std::string>& defines, const std::string& label)
+    double bakeLut(gl::State& state, gl::Texture& lut, const std::vector<std::string>& defines, const std::string& label,
+                   const char* shader = "ibl/dfg.comp", int samples = 0)
     {
         gl::DebugGroup group("bake " + label);
         gl::TextureDesc desc;
@@ -328,10 +330,10 @@ struct ImageBasedLighting::Impl {
         desc.label = label;
         lut = gl::Texture(desc);
         Stopwatch compile;
-        gl::Program p({.compute = "ibl/dfg.comp", .defines = defines, .label = label});
+        gl::Program p({.compute = shader, .defines = defines, .label = label});
         const double compileMs = compile.elapsedMs();
         state.useProgram(p);
-        p.set(p.uniformLocation("uSamples"), uint32_t(lutSettings.lutSamples));
+        p.set(p.uniformLocation("uSamples"), uint32_t(samples > 0 ? samples : lutSettings.lutSamples));
         state.bindImage(0, lut, 0, gl::ImageAccess::WriteOnly);
         state.dispatchCompute(uint32_t(groups(lutSettings.lutSize)), uint32_t(groups(lutSettings.lutSize)), 1);
         state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
@@ -360,7 +362,10 @@ BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const Environmen
     Stopwatch watch;
     BakeReport report;
     // Tables of other sizes or sample counts are other tables.
-    if (settings.lutSize != r.lutSettings.lutSize || settings.lutSamples != r.lutSettings.lutSamples) r.luts.clear();
+    if (settings.lutSize != r.lutSettings.lutSize || settings.lutSamples != r.lutSettings.lutSamples) {
+        r.luts.clear();
+        r.sheenLut = gl::Texture();
+    }
     r.lutSettings = settings;
     if (!cacheDirectory.empty()) {
         report.cacheFile = cacheDirectory / fmt::format("env-{}-{}.bin", map.key, settings.key());
@@ -433,6 +438,31 @@ const gl::Texture& ImageBasedLighting::dfg(gl::State& state, const ResolvedShadi
     log::info("baked the DFG table of {} ({}², {} samples) in {:.0f} ms (compiling {:.0f} ms)", name, r.lutSettings.lutSize,
               r.lutSettings.lutSamples, bakeMs, compileMs);
     return lut;
+}
+
+const gl::Texture& ImageBasedLighting::sheenAlbedo(gl::State& state)
+{
+    Impl& r = *mImpl;
+    if (r.sheenLut) return r.sheenLut;
+    const int samples = r.lutSettings.lutSamples * kSheenAlbedoSampleFactor;
+    const std::string label = "sheen albedo";
+    fs::path file;
+    if (!r.lutCacheDirectory.empty()) {
+        // As the DFG tables': size, samples and the compiled source name the entry.
+        const uint64_t source = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/sheen_albedo.comp", {}).text);
+        file = r.lutCacheDirectory / fmt::format("sheen-albedo-{}x{}-{:016x}.bin", r.lutSettings.lutSize, samples, source);
+        std::ifstream in(file, std::ios::binary);
+        if (in && checkMagic(in) && readTexture(in, r.sheenLut, label, gl::Format::RG16F, 2) && r.sheenLut.width() == r.lutSettings.lutSize)
+            return r.sheenLut;
+    }
+    Stopwatch watch;
+    const double compileMs = r.bakeLut(state, r.sheenLut, {}, label, "ibl/sheen_albedo.comp", samples);
+    glFinish(); // the time of the bake, not of its submission
+    const double bakeMs = watch.elapsedMs();
+    if (!file.empty()) writeAtomically(file, [&](std::ofstream& out) { writeTextures(out, r.sheenLut); });
+    log::info("baked the sheen albedo table ({}², {} samples) in {:.0f} ms (compiling {:.0f} ms)", r.lutSettings.lutSize, samples,
+              bakeMs, compileMs);
+    return r.sheenLut;
 }
 
 } // namespace specula::render

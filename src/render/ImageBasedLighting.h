@@ -55,6 +55,13 @@ public:
     const gl::Texture& dfg(gl::State& state, const ResolvedShading& shading);
     /// Whether dfg(shading) is ready.
     bool hasDfg(const ResolvedShading& shading) const;
+    /// KHR_materials_sheen's table: the Charlie lobe's directional albedo E(n.v, sheen perceptual
+    /// roughness) in R, one for every variant (the lobe has no D, G or F choices). Baked on first
+    /// use by shaders/ibl/sheen_albedo.comp at the DFG table's size with kSheenAlbedoSampleFactor x
+    /// its samples (the lobe's half vectors near the horizon send most reflections below it), and
+    /// cached on disk as the DFG tables are.
+    const gl::Texture& sheenAlbedo(gl::State& state);
+    static constexpr int kSheenAlbedoSampleFactor = 4;
     void setLutCacheDirectory(const std::filesystem::path& directory);
 
 private:

@@ -203,12 +203,13 @@ struct Renderer::Impl {
 
 Renderer::Renderer() : mImpl(std::make_unique<Impl>())
 {
-    // The forward pass binds units up to SPECULA_UNIT_CLEARCOAT_NORMAL (shaders/shared/Bindings.h).
-    static_assert(SPECULA_UNIT_CLEARCOAT_NORMAL > SPECULA_UNIT_ENVIRONMENT_CUBE && SPECULA_UNIT_ENVIRONMENT_CUBE > SPECULA_UNIT_TRANSMISSION &&
+    // The forward pass binds units up to SPECULA_UNIT_SHEEN_ALBEDO (shaders/shared/Bindings.h).
+    static_assert(SPECULA_UNIT_SHEEN_ALBEDO > SPECULA_UNIT_SHEEN_ROUGHNESS && SPECULA_UNIT_SHEEN_ROUGHNESS > SPECULA_UNIT_CLEARCOAT_NORMAL &&
+                  SPECULA_UNIT_CLEARCOAT_NORMAL > SPECULA_UNIT_ENVIRONMENT_CUBE && SPECULA_UNIT_ENVIRONMENT_CUBE > SPECULA_UNIT_TRANSMISSION &&
                   SPECULA_UNIT_TRANSMISSION > SPECULA_UNIT_IRRADIANCE);
-    if (gl::maxTextureUnits() <= SPECULA_UNIT_CLEARCOAT_NORMAL)
+    if (gl::maxTextureUnits() <= SPECULA_UNIT_SHEEN_ALBEDO)
         throw Error("this OpenGL implementation has {} texture units; Specula needs {}", gl::maxTextureUnits(),
-                    SPECULA_UNIT_CLEARCOAT_NORMAL + 1);
+                    SPECULA_UNIT_SHEEN_ALBEDO + 1);
 }
 Renderer::~Renderer() = default;
 
@@ -503,6 +504,8 @@ glm::vec4 Renderer::materialParameter(int material, MaterialParameter parameter)
     case MaterialParameter::ClearcoatFactor: return glm::vec4(r.clearcoat.x, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::ClearcoatRoughness: return glm::vec4(r.clearcoat.y, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::Dispersion: return glm::vec4(r.attenuation.w, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::SheenColor: return glm::vec4(glm::vec3(r.sheen), 0.0f);
+    case MaterialParameter::SheenRoughness: return glm::vec4(r.sheen.w, 0.0f, 0.0f, 0.0f);
     }
     return glm::vec4(0.0f);
 }
@@ -563,6 +566,17 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
         const glm::vec4 v(std::max(value.x, 0.0f));
         gpu.writeMaterial(material, offsetof(GpuMaterial, attenuation) + 3 * sizeof(float), sizeof(float), &v.x);
         gpu.setFeature(material, SPECULA_MATERIAL_DISPERSION, v.x > 0.0f && gpu.record(material).transmission.z > 0.0f);
+        break;
+    }
+    case MaterialParameter::SheenColor: {
+        const glm::vec3 v = glm::clamp(glm::vec3(value), 0.0f, 1.0f);
+        gpu.writeMaterial(material, offsetof(GpuMaterial, sheen), 3 * sizeof(float), &v.x);
+        gpu.setSheen(material, glm::any(glm::greaterThan(v, glm::vec3(0.0f))));
+        break;
+    }
+    case MaterialParameter::SheenRoughness: {
+        const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, sheen) + 3 * sizeof(float), sizeof(float), &v.x);
         break;
     }
     }

@@ -47,8 +47,10 @@ enum class MaterialParameter {
     /// x, KHR_materials_dispersion (20 / V_d; 0 = none: the DISPERSION variant goes); refracts
     /// per channel only through a volume (a transmissive material with a thickness)
     Dispersion,
+    SheenColor,         ///< rgb, KHR_materials_sheen colour factor (black = no sheen: the SHEEN variant goes)
+    SheenRoughness,     ///< x, the sheen's perceptual roughness
 };
-constexpr int kMaterialParameterCount = int(MaterialParameter::Dispersion) + 1;
+constexpr int kMaterialParameterCount = int(MaterialParameter::SheenRoughness) + 1;
 
 /// How the specular lobe integrates image-based light (docs/ibl.md).
 enum class IblSpecular {

@@ -28,6 +28,7 @@ constexpr std::string_view kSupportedExtensions[] = {
     "KHR_materials_clearcoat", // the clearcoat layer (Material::clearcoat*)
     "KHR_materials_dispersion", // per-channel refraction through a volume (Material::dispersion)
     "KHR_materials_emissive_strength",
+    "KHR_materials_sheen", // the sheen lobe (Material::sheen*)
     "KHR_materials_ior",      // F0 of the dielectric part (Material::ior)
     "KHR_materials_specular", // factors; its textures are ignored
     "KHR_materials_transmission", // factor; its texture is ignored (docs/transparency.md)

@@ -330,6 +330,17 @@ void Importer::convertMaterials()
             if (const tinygltf::Value* normal = member(*clearcoat, "clearcoatNormalTexture"))
                 material.clearcoatNormalScale = float(number(*normal, "scale").value_or(1.0));
         }
+        // KHR_materials_sheen: colour and roughness factors and their textures (sRGB RGB, A).
+        if (const tinygltf::Value* sheen = extension(source.extensions, "KHR_materials_sheen")) {
+            if (const tinygltf::Value* color = member(*sheen, "sheenColorFactor"); color && color->IsArray() && color->ArrayLen() == 3)
+                for (int c = 0; c < 3; ++c) {
+                    const tinygltf::Value& e = color->Get(c);
+                    if (e.IsNumber()) material.sheenColorFactor[c] = float(std::clamp(e.GetNumberAsDouble(), 0.0, 1.0));
+                }
+            material.sheenRoughnessFactor = float(std::clamp(number(*sheen, "sheenRoughnessFactor").value_or(0.0), 0.0, 1.0));
+            material.sheenColorTexture = extensionTexture(*sheen, "sheenColorTexture", where);
+            material.sheenRoughnessTexture = extensionTexture(*sheen, "sheenRoughnessTexture", where);
+        }
         // KHR_materials_unlit: colour = the base colour term (factor × texture × vertex colour),
         // whatever the lights and the environment. The other PBR properties are only the fallback
         // of viewers without the extension (kept for --shading pbr), but emission is no part of

@@ -111,6 +111,13 @@ struct Material {
     TextureRef clearcoatTexture;          ///< R
     TextureRef clearcoatRoughnessTexture; ///< G
     TextureRef clearcoatNormalTexture;    ///< tangent space, as normalTexture
+    /// KHR_materials_sheen: a Charlie sheen lobe (Estevez & Kulla 2017) over the material, which
+    /// is scaled by 1 - max(sheen colour) E(n.v) (black = no sheen). The colour is the factor x
+    /// sheenColorTexture's RGB (sRGB), the perceptual roughness the factor x sheenRoughnessTexture's A.
+    glm::vec3 sheenColorFactor{0.0f};
+    float sheenRoughnessFactor = 0.0f;
+    TextureRef sheenColorTexture;     ///< sRGB
+    TextureRef sheenRoughnessTexture; ///< A
     /// Shading model and BRDF terms (scene files); unset ones come from the frame.
     MaterialShading shading;
     /// Index of refraction of the dielectric part (KHR_materials_ior): F0 = ((ior − 1)/(ior + 1))²
@@ -127,7 +134,8 @@ struct Material {
     void forEachTexture(F&& f)
     {
         for (TextureRef* ref : {&baseColorTexture, &metallicRoughnessTexture, &normalTexture, &occlusionTexture,
-                                &emissiveTexture, &clearcoatTexture, &clearcoatRoughnessTexture, &clearcoatNormalTexture})
+                                &emissiveTexture, &clearcoatTexture, &clearcoatRoughnessTexture, &clearcoatNormalTexture,
+                                &sheenColorTexture, &sheenRoughnessTexture})
             f(*ref);
     }
 };

@@ -77,7 +77,7 @@ const std::vector<std::string_view> kMaterialKeys = {"name", "baseColor", "metal
                                                      "shading", "brdfD", "brdfG", "brdfF", "brdfDiffuse", "ior",
                                                      "shininess", "sectorLight", "transmission", "thickness", "dispersion",
                                                      "attenuationDistance", "attenuationColor", "clearcoat",
-                                                     "clearcoatRoughness"};
+                                                     "clearcoatRoughness", "sheenColor", "sheenRoughness"};
 
 /// Sets the material's fields that `object` gives; the others keep their values (a shape's
 /// defaults, or a glTF model's material with its textures).
@@ -113,6 +113,12 @@ void applyMaterialKeys(const Object& object, Material& material)
     // KHR_materials_clearcoat's factors (a glTF model's clearcoat textures stay).
     material.clearcoatFactor = object.unitInterval("clearcoat").value_or(material.clearcoatFactor);
     material.clearcoatRoughnessFactor = object.unitInterval("clearcoatRoughness").value_or(material.clearcoatRoughnessFactor);
+    // KHR_materials_sheen's factors (a glTF model's sheen textures stay).
+    if (const auto color = object.color("sheenColor")) {
+        if (glm::any(glm::greaterThan(*color, glm::vec3(1.0f)))) object.fail("sheenColor", "must be between 0 and 1");
+        material.sheenColorFactor = *color;
+    }
+    material.sheenRoughnessFactor = object.unitInterval("sheenRoughness").value_or(material.sheenRoughnessFactor);
     // Material system (docs/scene-format.md): shading model, BRDF terms, F0 from an IOR, Phong exponent.
     if (const auto v = object.choice("shading", {"pbr", "unlit", "flat", "gouraud", "phong", "blinn-phong", "doom"}))
         material.shading.model = parseShadingModel(*v);

@@ -29,6 +29,9 @@ enum class DebugView {
     /// Lights per pixel: the length of each shading point's light list (its cluster's, with
     /// the directional lights), as a heat map with its legend (docs/clustered-shading.md).
     LightCount,
+    /// KHR_materials_sheen: what the sheen lobe reflects of light from all around, sheen colour ×
+    /// E(n·v, sheen roughness) (rgb; black without sheen), the share the base below gives up.
+    Sheen,
 };
 
 std::optional<DebugView> parseDebugView(std::string_view name);

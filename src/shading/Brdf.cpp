@@ -191,6 +191,13 @@ void evaluateLobes(const Surface& s, const dvec3& n, const dvec3& v, const dvec3
     const double Fd = diffuseLobe(s.diffuse, r, NoV, NoL, VoH, glm::dot(v, l));
     diffuse = (dvec3(1.0) - F) * diffuseColor * Fd;
     specular = F * (D * V);
+    if (glm::any(glm::greaterThan(s.sheenColor, dvec3(0.0)))) {
+        // The base gives up what the sheen reflects; a clearcoat (below) then lies over both.
+        const double rs = std::clamp(s.sheenRoughness, kMinPerceptualRoughness, 1.0);
+        const double scaling = 1.0 - std::max(std::max(s.sheenColor.x, s.sheenColor.y), s.sheenColor.z) * s.sheenAlbedo;
+        diffuse *= scaling;
+        specular = specular * scaling + s.sheenColor * (D_Charlie(NoH, rs * rs) * V_Charlie(std::max(NoV, 1e-4), NoL, rs * rs));
+    }
     if (s.clearcoat > 0.0) {
         const double rc = std::clamp(s.clearcoatRoughness, kMinPerceptualRoughness, 1.0);
         const double Vc = s.imageBased ? visibilityImageBased(s.geometry, NoV, NoL, NoH, VoH, rc)
@@ -199,6 +206,52 @@ void evaluateLobes(const Surface& s, const dvec3& n, const dvec3& v, const dvec3
         diffuse *= attenuation;
         specular = specular * attenuation + s.clearcoat * fresnel(s.fresnel, dvec3(0.04), 1.0, VoH) * (distribution(s.distribution, NoH, rc * rc) * Vc);
     }
+}
+
+double D_Charlie(double NoH, double alpha)
+{
+    const double sin2h = std::max(1.0 - NoH * NoH, 0.0);
+    return (2.0 + 1.0 / alpha) * std::pow(sin2h, 0.5 / alpha) / (2.0 * kPi);
+}
+
+namespace {
+
+// Estevez & Kulla 2017's fit of ln Λ, interpolated by (1 − α)² between its α = 0 and α = 1 fits.
+double charlieL(double x, double alpha)
+{
+    const double t = (1.0 - alpha) * (1.0 - alpha);
+    const auto mix = [t](double a, double b) { return a + (b - a) * t; };
+    return mix(21.5473, 25.3245) / (1.0 + mix(3.82987, 3.32435) * std::pow(x, mix(0.19823, 0.16801))) +
+           mix(-1.97760, -1.27393) * x + mix(-4.32054, -4.85967);
+}
+
+double charlieLambda(double cosTheta, double alpha)
+{
+    return cosTheta < 0.5 ? std::exp(charlieL(cosTheta, alpha)) : std::exp(2.0 * charlieL(0.5, alpha) - charlieL(1.0 - cosTheta, alpha));
+}
+
+} // namespace
+
+double V_Charlie(double NoV, double NoL, double alpha)
+{
+    return 1.0 / ((1.0 + charlieLambda(NoV, alpha) + charlieLambda(NoL, alpha)) * (4.0 * NoV * NoL));
+}
+
+double sheenDirectionalAlbedo(double NoV, double perceptualRoughness, int steps)
+{
+    const double r = std::clamp(perceptualRoughness, kMinPerceptualRoughness, 1.0), alpha = r * r;
+    NoV = std::clamp(NoV, 1e-4, 1.0);
+    const dvec3 v(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
+    double sum = 0.0;
+    for (int i = 0; i < steps; ++i) {
+        const double cosT = (i + 0.5) / steps, sinT = std::sqrt(1.0 - cosT * cosT);
+        for (int j = 0; j < steps; ++j) { // phi over half the circle: the lobe is symmetric in it
+            const double phi = kPi * (j + 0.5) / steps;
+            const dvec3 l(sinT * std::cos(phi), sinT * std::sin(phi), cosT);
+            sum += D_Charlie(glm::normalize(v + l).z, alpha) * V_Charlie(NoV, cosT, alpha) * cosT;
+        }
+    }
+    return sum * (1.0 / steps) * (2.0 * kPi / steps);
 }
 
 dvec3 evaluateClassic(const dvec3& kd, const dvec3& ks, double shininess, bool blinn, const dvec3& n, const dvec3& v,

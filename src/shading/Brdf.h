@@ -62,7 +62,22 @@ struct Surface {
     /// the specular lobe (F0 0.04, F90 1, the same D, V and F terms).
     double clearcoat = 0.0;
     double clearcoatRoughness = 0.0; ///< perceptual, clamped like perceptualRoughness
+    /// KHR_materials_sheen (shaders/forward/sheen.glsl): with a colour above 0 the lobes are
+    /// scaled by 1 − max3(sheenColor) sheenAlbedo and sheenColor D_Charlie V_Charlie is added
+    /// to the specular lobe. sheenAlbedo is E(n·v) of that view, sheenDirectionalAlbedo(n·v,
+    /// sheenRoughness): the caller's, as it depends on the view only.
+    dvec3 sheenColor{0.0};
+    double sheenRoughness = 0.0; ///< perceptual, clamped like perceptualRoughness
+    double sheenAlbedo = 0.0;
 };
+
+/// The "Charlie" sheen distribution and visibility (Estevez & Kulla 2017, as KHR_materials_sheen
+/// gives them; shaders/brdf/sheen.glsl), alpha = sheen perceptual roughness².
+double D_Charlie(double NoH, double alpha);
+double V_Charlie(double NoV, double NoL, double alpha);
+/// E(n·v) = ∫ D_Charlie V_Charlie (n·l) dω of the sheen lobe with colour 1, by a midpoint
+/// quadrature over the hemisphere (`steps`² points); the roughness is clamped as the shader's.
+double sheenDirectionalAlbedo(double NoV, double perceptualRoughness, int steps = 96);
 
 /// f(l, v) (1/sr) for unit n, v, l, not multiplied by NoL. Zero when NoL <= 0.
 dvec3 evaluate(const Surface& surface, const dvec3& n, const dvec3& v, const dvec3& l);

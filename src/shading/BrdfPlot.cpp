@@ -50,6 +50,10 @@ BrdfCurves sampleBrdfCurves(const BrdfPlotMaterial& m, const ResolvedShading& sh
     surface.diffuse = shading.diffuse;
     surface.clearcoat = std::clamp(m.clearcoat, 0.0, 1.0);
     surface.clearcoatRoughness = m.clearcoatRoughness;
+    const bool sheen = glm::any(glm::greaterThan(m.sheenColor, glm::dvec3(0.0)));
+    surface.sheenColor = glm::clamp(m.sheenColor, 0.0, 1.0);
+    surface.sheenRoughness = m.sheenRoughness;
+    const double sheenRoughness = std::clamp(m.sheenRoughness, brdf::kMinPerceptualRoughness, 1.0);
     // The same F0 and F90 as brdf::evaluate and makeSurfaceBrdf in shaders/brdf/brdf.glsl.
     const glm::dvec3 f0 = glm::mix(glm::min(0.04 * m.specularColor, glm::dvec3(1.0)) * m.specularFactor, m.baseColor, metallic);
     const double f90 = m.specularFactor + (1.0 - m.specularFactor) * metallic;
@@ -61,6 +65,7 @@ BrdfCurves sampleBrdfCurves(const BrdfPlotMaterial& m, const ResolvedShading& sh
     const glm::dvec3 n(0.0, 0.0, 1.0);
     const double thetaV = glm::radians(viewDegrees);
     const glm::dvec3 view(-std::sin(thetaV), 0.0, std::cos(thetaV));
+    if (sheen) surface.sheenAlbedo = brdf::sheenDirectionalAlbedo(std::cos(thetaV), m.sheenRoughness);
     for (int k = 0; k < samples; ++k) {
         const double degrees = -89.0 + 178.0 * double(k) / double(samples - 1);
         const double thetaL = glm::radians(degrees);
@@ -83,6 +88,12 @@ BrdfCurves sampleBrdfCurves(const BrdfPlotMaterial& m, const ResolvedShading& sh
         curves.v.push_back(float(brdf::visibility(shading.geometry, NoV, NoL, NoH, VoH, r)));
         curves.f.push_back(luminance(brdf::fresnel(shading.fresnel, f0, f90, VoH)));
         curves.whole.push_back(luminance(brdf::evaluate(surface, n, view, l)) * float(NoL));
+        if (sheen && NoL > 0.0)
+            curves.sheen.push_back(luminance(surface.sheenColor) *
+                                   float(brdf::D_Charlie(NoH, sheenRoughness * sheenRoughness) *
+                                         brdf::V_Charlie(std::max(NoV, 1e-4), NoL, sheenRoughness * sheenRoughness) * NoL));
+        else if (sheen)
+            curves.sheen.push_back(0.0f);
     }
     return curves;
 }

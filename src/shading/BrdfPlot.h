@@ -24,6 +24,8 @@ struct BrdfPlotMaterial {
     double shininess = 0.0;        ///< classic exponent; 0 = from roughness (brdf::classicShininess)
     double clearcoat = 0.0;        ///< KHR_materials_clearcoat factor (0 = no layer)
     double clearcoatRoughness = 0.0;
+    glm::dvec3 sheenColor{0.0};    ///< KHR_materials_sheen colour (black = no sheen)
+    double sheenRoughness = 0.0;
 };
 
 /// What the curves show for a shading model.
@@ -46,6 +48,9 @@ struct BrdfCurves {
     /// The reflected radiance per unit illuminance: f(l, v) × n·l with the chosen diffuse lobe
     /// (Microfacet, single scattering); (kd n·l + ks lobe) / π (Classic, brdf::evaluateClassic).
     std::vector<float> whole;
+    /// Microfacet with a sheen: the sheen lobe alone, sheenColor D_Charlie V_Charlie × n·l
+    /// (luminance); empty without one. `whole` holds it over the scaled base.
+    std::vector<float> sheen;
     double shininess = 0.0; ///< Classic: the exponent used
 };
 

@@ -23,6 +23,7 @@ constexpr int kShadowFilterShift = 35, kShadowTapsShift = 37;
 constexpr uint64_t kBlendTransparent = uint64_t(1) << 39, kTransmission = uint64_t(1) << 40, kOit = uint64_t(1) << 41;
 constexpr uint64_t kClearcoat = uint64_t(1) << 42;
 constexpr uint64_t kDispersion = uint64_t(1) << 46;
+constexpr uint64_t kSheen = uint64_t(1) << 43;
 constexpr int kDebugShift = 16, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
               kDiffuseShift = 30;
 constexpr uint64_t field(int shift, int bits) { return ((uint64_t(1) << bits) - 1) << shift; }
@@ -68,6 +69,7 @@ constexpr std::array kTable = {
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::BrdfF), "DEBUG_VIEW_BRDF_F", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::Cascades), "DEBUG_VIEW_CASCADES", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::LightCount), "DEBUG_VIEW_LIGHT_COUNT", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::Sheen), "DEBUG_VIEW_SHEEN", K::DebugView},
     VariantDefine{kIbl, kIbl, "IBL", K::FrameFeature},
     VariantDefine{kIblImportance, kIblImportance, "IBL_IMPORTANCE", K::FrameFeature},
     VariantDefine{kEnergyCompensation, kEnergyCompensation, "ENERGY_COMPENSATION", K::FrameFeature},
@@ -96,6 +98,7 @@ constexpr std::array kTable = {
     VariantDefine{kTransmission, kTransmission, "TRANSMISSION", K::MaterialFeature},
     VariantDefine{kClearcoat, kClearcoat, "CLEARCOAT", K::MaterialFeature},
     VariantDefine{kDispersion, kDispersion, "DISPERSION", K::MaterialFeature},
+    VariantDefine{kSheen, kSheen, "SHEEN", K::MaterialFeature},
     VariantDefine{kOit, kOit, "OIT", K::FrameFeature},
 };
 static_assert((kFeatureMask & (kIbl | kIblImportance | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
@@ -134,6 +137,9 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
         }
         // KHR_materials_clearcoat: the layer, in the lit frame only.
         if ((features & SPECULA_MATERIAL_CLEARCOAT) && !doomIndexed && !isMaterialDebugView(debugView)) key |= kClearcoat;
+        // KHR_materials_sheen: the lobe in the lit frame, and its own debug view.
+        if ((features & SPECULA_MATERIAL_SHEEN) && !doomIndexed && (!isMaterialDebugView(debugView) || debugView == DebugView::Sheen))
+            key |= kSheen;
     }
     // OIT's accumulation is for the blended list only (transmissive draws, blended or not, are
     // drawn sorted before it), and never in an indexed frame.
@@ -167,6 +173,11 @@ ResolvedShading ForwardVariant::shading() const
     s.fresnel = BrdfFresnel((key & kFresnelMask) >> kFresnelShift);
     s.diffuse = BrdfDiffuse((key & kDiffuseMask) >> kDiffuseShift);
     return s;
+}
+
+bool ForwardVariant::sheen() const
+{
+    return (key & kSheen) != 0;
 }
 
 bool ForwardVariant::debugView() const

@@ -57,6 +57,8 @@ struct ForwardVariant {
     ResolvedShading shading() const;
     /// The material or BRDF debug view the key selects, if any.
     bool debugView() const;
+    /// Whether the key has KHR_materials_sheen's lobe (SHEEN): its program samples the sheen albedo table.
+    bool sheen() const;
     std::vector<std::string> defines() const;
     /// The defines joined by ';' (program labels).
     std::string name() const;

@@ -73,3 +73,20 @@ TEST(CliMaterials, DoomLevelIsADoomFrameByDefault)
     EXPECT_NE(bloom.err.find("a Doom frame is palette colours only: MSAA, bloom left out"), std::string::npos) << bloom.err;
     EXPECT_EQ(offPalette(specula::readPng(dir + "/bloom.png")), 0u);
 }
+
+TEST(CliMaterials, SheenDebugViewShowsOnlyTheSheen)
+{
+    // tests/assets/materials/sheen_spheres.json: a bare sphere left, two with sheen (middle and
+    // right). --debug-view sheen is black on the bare one and not on the others.
+    const std::string dir = tempDir("materials-sheen");
+    const auto r = runCli(std::string("render ") + SPECULA_SOURCE_DIR + "/tests/assets/materials/sheen_spheres.json --env none -o " + dir +
+                          "/sheen.png --width 192 --height 72 --msaa 1 --debug-view sheen");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const specula::ImageRGBA8 image = specula::readPng(dir + "/sheen.png");
+    auto at = [&](int x, int y) { return image.pixels[(size_t(y) * size_t(image.width) + size_t(x)) * 4]; };
+    const int y = image.height / 2;
+    // The frame spans x = -2 .. 2 m at the spheres (yfov 32 degrees at 2.6 m, 192 x 72): the bare
+    // sphere's centre (x = -1) is pixel 48, the velvet's (x = 0, radius 0.45 m) 96 ± 21.
+    EXPECT_EQ(at(48, y), 0);
+    EXPECT_GT(at(80, y), 10); // red of c E(n.v) for the pink sheen, n.v about 0.7
+}

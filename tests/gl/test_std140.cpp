@@ -61,6 +61,9 @@ TEST_F(GlTest, SharedStructsMatchGlslLayout)
     const gl::Program coated({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = {"CLEARCOAT"}});
     EXPECT_EQ(blockSize(coated.id(), GL_UNIFORM_BLOCK, "MaterialBlock"), GLint(sizeof(GpuMaterial)));
     EXPECT_EQ(memberOffset(coated.id(), GL_UNIFORM, "material.clearcoat"), GLint(offsetof(GpuMaterial, clearcoat)));
+    const gl::Program sheened({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = {"SHEEN"}});
+    EXPECT_EQ(blockSize(sheened.id(), GL_UNIFORM_BLOCK, "MaterialBlock"), GLint(sizeof(GpuMaterial)));
+    EXPECT_EQ(memberOffset(sheened.id(), GL_UNIFORM, "material.sheen"), GLint(offsetof(GpuMaterial, sheen)));
 }
 
 TEST_F(GlTest, PostStructsMatchGlslLayout)

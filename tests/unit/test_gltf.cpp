@@ -1653,3 +1653,45 @@ TEST(GltfExtensions, DispersionValue)
     EXPECT_EQ(scene.materials.at(2).dispersion, 0.0f);
     EXPECT_FLOAT_EQ(scene.materials.at(0).thickness, 0.5f);
 }
+
+// tests/assets/gltf/sheen_quad.gltf (make_sheen.py; the Khronos validator: 0 errors, 0 warnings):
+// every KHR_materials_sheen field and texture, texCoord 1 and a transform, no warning.
+TEST(GltfExtensions, SheenFieldsAndTextures)
+{
+    const Scene scene = loadGltf(kTestAssets / "sheen_quad.gltf");
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    ASSERT_EQ(scene.materials.size(), 1u);
+    const Material& m = scene.materials[0];
+    EXPECT_EQ(m.sheenColorFactor, glm::vec3(0.9f, 1.0f, 0.8f));
+    EXPECT_FLOAT_EQ(m.sheenRoughnessFactor, 0.8f);
+    ASSERT_TRUE(m.sheenColorTexture.valid());
+    ASSERT_TRUE(m.sheenRoughnessTexture.valid());
+    EXPECT_EQ(m.sheenColorTexture.image, 0);
+    EXPECT_EQ(m.sheenRoughnessTexture.image, 1);
+    EXPECT_EQ(m.sheenColorTexture.texCoord, 1);
+    EXPECT_EQ(m.sheenRoughnessTexture.texCoord, 0);
+    EXPECT_EQ(m.sheenColorTexture.transform.offset, glm::vec2(0.5f, 0.0f));
+    const Image& color = scene.images.at(0);
+    ASSERT_EQ(color.pixels.size(), 8u); // 2 x 1 RGBA
+    EXPECT_EQ(color.pixels[0], 255);
+    EXPECT_EQ(color.pixels[4], 64);
+    EXPECT_EQ(scene.images.at(1).pixels[3], 153);
+}
+
+TEST(GltfExtensions, SheenDefaultsAndClamps)
+{
+    // The extension's defaults (colour black: no sheen, roughness 0) and factors outside [0, 1].
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}})["material"] = 1;
+    b.doc["materials"] = {{{"extensions", {{"KHR_materials_sheen", json::object()}}}},
+                          {{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {1.5, 0.25, -1}}, {"sheenRoughnessFactor", 2.0}}}}}}};
+    b.doc["extensionsUsed"] = json::array({"KHR_materials_sheen"});
+    const Scene scene = loadGltf(b.write(dir, "sheen.gltf"));
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    EXPECT_EQ(scene.materials.at(0).sheenColorFactor, glm::vec3(0.0f));
+    EXPECT_EQ(scene.materials.at(0).sheenRoughnessFactor, 0.0f);
+    EXPECT_FALSE(scene.materials.at(0).sheenColorTexture.valid());
+    EXPECT_EQ(scene.materials.at(1).sheenColorFactor, glm::vec3(1.0f, 0.25f, 0.0f));
+    EXPECT_EQ(scene.materials.at(1).sheenRoughnessFactor, 1.0f);
+}

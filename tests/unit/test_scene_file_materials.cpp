@@ -153,6 +153,23 @@ TEST(SceneFileMaterials, Clearcoat)
     EXPECT_NE(error(R"({"clearcoatRoughness": -0.1})").find("clearcoatRoughness"), std::string::npos);
 }
 
+// KHR_materials_sheen's factors in a scene file (docs/scene-format.md) and their range errors.
+TEST(SceneFileMaterials, Sheen)
+{
+    const SceneDocument d = test::loadSceneText(R"({"shapes": [
+        {"type": "sphere", "material": {"sheenColor": [1, 0.5, 0.25], "sheenRoughness": 0.3}},
+        {"type": "sphere", "material": {}}]})");
+    ASSERT_EQ(d.scene.materials.size(), 2u);
+    EXPECT_EQ(d.scene.materials[0].sheenColorFactor, glm::vec3(1.0f, 0.5f, 0.25f));
+    EXPECT_FLOAT_EQ(d.scene.materials[0].sheenRoughnessFactor, 0.3f);
+    EXPECT_EQ(d.scene.materials[1].sheenColorFactor, glm::vec3(0.0f)); // no sheen by default
+    auto error = [](const std::string& material) {
+        return test::sceneError(R"({"shapes": [{"type": "sphere", "material": )" + material + "}]}");
+    };
+    EXPECT_NE(error(R"({"sheenColor": [1.5, 0, 0]})").find("sheenColor"), std::string::npos);
+    EXPECT_NE(error(R"({"sheenRoughness": -0.1})").find("sheenRoughness"), std::string::npos);
+}
+
 // The transmission golden's scene file (tests/assets/transparency/transmission.json) loads.
 TEST(SceneFileMaterials, TransmissionSceneLoads)
 {

@@ -28,6 +28,7 @@ struct ForwardProgram {
     int receiveShadows = -1;
     ResolvedShading shading;
     bool readsDfg = false; ///< samples the DFG table of `shading` (image-based light or energy compensation)
+    bool readsSheenAlbedo = false; ///< the SHEEN variant: samples the sheen lobe's albedo table
 };
 
 bool iblOn(const FrameContext& frame)
@@ -156,6 +157,7 @@ struct ForwardPass::Impl {
         p.shading = shading;
         // Debug views and the classic models return before the split sum (pbr.frag).
         p.readsDfg = shading.model == scene::ShadingModel::Pbr && !variant.debugView() && (iblOn(frame) || s.energyCompensation);
+        p.readsSheenAlbedo = variant.sheen();
         return programs.emplace(variant.key, std::move(p)).first->second;
     }
 };
@@ -185,7 +187,8 @@ const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext
     for (const MaterialBinding& m : scene->materials()) {
         ForwardProgram& p = r.program(frame, m.features);
         const gl::Texture* dfg = p.readsDfg ? &frame.stores.ibl.dfg(frame.state(), p.shading) : nullptr;
-        r.materialPrograms.push_back({&p.program, p.model, p.normalMatrix, dfg, p.receiveShadows});
+        const gl::Texture* sheenAlbedo = p.readsSheenAlbedo ? &frame.stores.ibl.sheenAlbedo(frame.state()) : nullptr;
+        r.materialPrograms.push_back({&p.program, p.model, p.normalMatrix, dfg, p.receiveShadows, sheenAlbedo});
     }
     return r.materialPrograms;
 }
