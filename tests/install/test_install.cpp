@@ -212,7 +212,19 @@ TEST(Install, CommandLineRunsFromTheInstallPrefixAlone)
     const std::string constants = slurp(kWork / "rodata.bin");
     ASSERT_GT(constants.size(), 1000u);
     EXPECT_EQ(constants.find(SPECULA_SOURCE_DIR "/shaders"), std::string::npos);
-    EXPECT_EQ(constants.find(SPECULA_BUILD_DIR), std::string::npos);
+    // A sanitizer build keeps the names of the files it compiled for its reports (ASan's
+    // globals, UBSan's source locations), and some of those are headers and generated sources
+    // under the build tree: names only, never opened. Nothing else may point into the tree.
+    const std::string build = SPECULA_BUILD_DIR;
+    for (size_t at = constants.find(build); at != std::string::npos; at = constants.find(build, at + 1)) {
+        const std::string path = constants.substr(at, constants.find('\0', at) - at);
+#ifdef SPECULA_SANITIZE
+        const bool reportName = path.starts_with(build + "/include/") || path.starts_with(build + "/generated/");
+#else
+        const bool reportName = false;
+#endif
+        EXPECT_TRUE(reportName) << "the installed binary holds a path into the build tree: " << path;
+    }
 
     const std::string demo = " render --width 160 --height 120 --msaa 1 -o ";
     const Result rendered = run(quoted(specula) + demo + "demo.png", elsewhere);
