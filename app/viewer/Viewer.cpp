@@ -367,6 +367,8 @@ void Viewer::setMaterialParameter(int index, render::MaterialParameter parameter
     case render::MaterialParameter::SectorLight: m.sectorLight = int(std::lround(std::clamp(value.x, 0.0f, 255.0f))); break;
     case render::MaterialParameter::ClearcoatFactor: m.clearcoatFactor = std::clamp(value.x, 0.0f, 1.0f); break;
     case render::MaterialParameter::ClearcoatRoughness: m.clearcoatRoughnessFactor = std::clamp(value.x, 0.0f, 1.0f); break;
+    case render::MaterialParameter::AnisotropyStrength: m.anisotropyStrength = std::clamp(value.x, 0.0f, 1.0f); break;
+    case render::MaterialParameter::AnisotropyRotation: m.anisotropyRotation = value.x; break;
     case render::MaterialParameter::PhongSpecular: // the classic ks: only in the record
     case render::MaterialParameter::SpecularColor: break; // colour × ior: setMaterialIor
     }

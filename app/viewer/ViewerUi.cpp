@@ -343,6 +343,11 @@ void materialsPanel(Viewer& viewer)
     if (ImGui::SliderFloat("clearcoat roughness", &clearcoatRoughness, 0.0f, 1.0f))
         set(MaterialParameter::ClearcoatRoughness, glm::vec4(clearcoatRoughness));
     ImGui::Separator();
+    ImGui::TextDisabled("KHR_materials_anisotropy (GGX)");
+    float anisotropy = value(MaterialParameter::AnisotropyStrength).x, rotation = value(MaterialParameter::AnisotropyRotation).x;
+    if (ImGui::SliderFloat("anisotropy", &anisotropy, 0.0f, 1.0f)) set(MaterialParameter::AnisotropyStrength, glm::vec4(anisotropy));
+    if (ImGui::SliderAngle("anisotropy rotation", &rotation, -180.0f, 180.0f)) set(MaterialParameter::AnisotropyRotation, glm::vec4(rotation));
+    ImGui::Separator();
     ImGui::TextDisabled("Phong, Blinn-Phong, Gouraud, flat");
     glm::vec4 ks = value(MaterialParameter::PhongSpecular);
     if (ImGui::ColorEdit3("specular ks", &ks.x)) set(MaterialParameter::PhongSpecular, ks);
@@ -378,6 +383,7 @@ void brdfPanel(Viewer& viewer)
         material.clearcoat = value(MaterialParameter::ClearcoatFactor).x;
         material.clearcoatRoughness = value(MaterialParameter::ClearcoatRoughness).x;
     }
+    material.anisotropy = value(MaterialParameter::AnisotropyStrength).x;
     const render::FrameSettings& settings = viewer.settings();
     const render::ResolvedShading shading =
         render::resolveShading(settings.materialOverride, settings.brdfGeometry, render::packShading(renderer.materialShading(m)));
@@ -405,6 +411,12 @@ void brdfPanel(Viewer& viewer)
         ImGui::PlotLines("V = G/(4 NoL NoV)", curves.v.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
         ImGui::PlotLines("F (luminance)", curves.f.data(), n, 0, nullptr, 0.0f, 1.0f, ImVec2(0, 60));
         ImGui::PlotLines("f x NoL", curves.whole.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        if (!curves.wholeAcross.empty()) {
+            // KHR_materials_anisotropy: the curves above lie along the tangent; these across it.
+            ImGui::TextDisabled("anisotropic: above along the tangent, below across it");
+            ImGui::PlotLines("D across", curves.dAcross.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+            ImGui::PlotLines("f x NoL across", curves.wholeAcross.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        }
         break;
     }
 }
@@ -527,7 +539,7 @@ void postPanel(Viewer& viewer)
     }
     if (ImGui::BeginCombo("debug view", debugViewName(s.debugView))) {
         // Every view up to the last one (BrdfF), material inputs and BRDF terms included.
-        for (int k = 0; k <= int(DebugView::LightCount); ++k) {
+        for (int k = 0; k <= int(DebugView::Anisotropy); ++k) {
             const auto d = DebugView(k);
             if (ImGui::Selectable(debugViewName(d), d == s.debugView)) s.debugView = d;
         }

@@ -9,6 +9,7 @@ const uint TEX_EMISSIVE = 4u;
 const uint TEX_CLEARCOAT = 5u;
 const uint TEX_CLEARCOAT_ROUGHNESS = 6u;
 const uint TEX_CLEARCOAT_NORMAL = 7u;
+const uint TEX_ANISOTROPY = 10u; // 8, 9: KHR_materials_sheen's; 11, 12: KHR_materials_iridescence's
 
 // Texture coordinates of one texture: its uv set and KHR_texture_transform.
 vec2 textureUv(uint texture)

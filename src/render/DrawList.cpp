@@ -92,9 +92,13 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
         }
         state.apply(pipeline);
         if (options.textures == MaterialTextures::All) {
-            // The clearcoat slots only for the variant that samples them.
-            const size_t slots = m.clearcoat ? size_t(TextureSlot::Count) : size_t(TextureSlot::Clearcoat);
-            for (size_t slot = 0; slot < slots; ++slot) {
+            // An extension's slots only for the variant that samples them.
+            for (size_t slot = 0; slot < size_t(TextureSlot::Count); ++slot) {
+                const TextureSlot s = TextureSlot(slot);
+                const bool clearcoatSlot = s == TextureSlot::Clearcoat || s == TextureSlot::ClearcoatRoughness ||
+                                           s == TextureSlot::ClearcoatNormal;
+                if (clearcoatSlot ? !m.clearcoat : s == TextureSlot::Anisotropy ? !m.anisotropy : slot > size_t(TextureSlot::Emissive))
+                    continue;
                 const gl::Texture* texture = m.textures[slot];
                 const bool normal = slot == size_t(TextureSlot::Normal) || slot == size_t(TextureSlot::ClearcoatNormal);
                 if (!texture) texture = normal ? options.flatNormal : options.white;

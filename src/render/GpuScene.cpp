@@ -1,6 +1,7 @@
 #include "render/GpuScene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <optional>
@@ -101,6 +102,7 @@ int textureUnit(TextureSlot slot)
     case TextureSlot::Clearcoat: return SPECULA_UNIT_CLEARCOAT;
     case TextureSlot::ClearcoatRoughness: return SPECULA_UNIT_CLEARCOAT_ROUGHNESS;
     case TextureSlot::ClearcoatNormal: return SPECULA_UNIT_CLEARCOAT_NORMAL;
+    case TextureSlot::Anisotropy: return SPECULA_UNIT_ANISOTROPY;
     default: return int(slot);
     }
 }
@@ -208,6 +210,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
         gpu.transmission = glm::vec4(m.transmissionFactor, m.ior.value_or(1.5f), m.thickness, m.attenuationDistance);
         gpu.attenuation = glm::vec4(m.attenuationColor, 0.0f);
         gpu.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughnessFactor, m.clearcoatNormalScale, 0.0f);
+        // The rotation as its cosine and sine: the shader turns the direction with them.
+        gpu.anisotropy = glm::vec4(m.anisotropyStrength, std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), 0.0f);
         // Classic models' specular colour: mid grey, a plastic highlight (Phong 1975's ks).
         gpu.phong = glm::vec4(glm::vec3(0.5f), m.shininess);
         for (int slot = 0; slot < int(TextureSlot::Count); ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
@@ -232,6 +236,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
             {m.clearcoatTexture, TextureSlot::Clearcoat, false, 0u},
             {m.clearcoatRoughnessTexture, TextureSlot::ClearcoatRoughness, false, 0u},
             {m.clearcoatNormalTexture, TextureSlot::ClearcoatNormal, false, SPECULA_MATERIAL_HAS_CLEARCOAT_NORMAL_TEXTURE},
+            // Read only by the ANISOTROPY variant, where anisotropy.w says there is one (linear).
+            {m.anisotropyTexture, TextureSlot::Anisotropy, false, 0u},
         };
         for (const auto& s : slots) {
             if (!s.ref.valid()) continue;
@@ -241,6 +247,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
             binding.samplers[size_t(s.slot)] = sampler(scene, s.ref.sampler);
             gpu.flags.x |= s.flag;
             packTransform(gpu, int(s.slot), s.ref);
+            if (s.slot == TextureSlot::Anisotropy) gpu.anisotropy.w = 1.0f;
         }
         if (m.doubleSided) gpu.flags.x |= SPECULA_MATERIAL_DOUBLE_SIDED;
         if (m.alphaMode == scene::AlphaMode::Mask) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_MASK;
@@ -251,6 +258,9 @@ GpuScene::GpuScene(const scene::Scene& scene)
         // A zero factor is no layer at all (the texture only scales the factor): no variant for it.
         binding.clearcoat = m.clearcoatFactor > 0.0f;
         if (binding.clearcoat) gpu.flags.x |= SPECULA_MATERIAL_CLEARCOAT;
+        // Strength 0 is the isotropic lobe (the texture's blue only scales it): no variant.
+        binding.anisotropy = m.anisotropyStrength > 0.0f;
+        if (binding.anisotropy) gpu.flags.x |= SPECULA_MATERIAL_ANISOTROPY;
         // The shading model and BRDF terms select the variant too (not read by the shaders).
         binding.features = gpu.flags.x | packShading(m.shading);
         gpuMaterials.push_back(gpu);
@@ -453,6 +463,20 @@ void GpuScene::setClearcoat(int material, bool on)
         binding.clearcoat = on;
         binding.features = on ? binding.features | SPECULA_MATERIAL_CLEARCOAT : binding.features & ~uint32_t(SPECULA_MATERIAL_CLEARCOAT);
         mRecords[record].flags.x = (mRecords[record].flags.x & ~uint32_t(SPECULA_MATERIAL_CLEARCOAT)) | (binding.features & SPECULA_MATERIAL_CLEARCOAT);
+        mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
+                               &mRecords[record].flags.x);
+    }
+}
+
+void GpuScene::setAnisotropy(int material, bool on)
+{
+    constexpr uint32_t kFlag = SPECULA_MATERIAL_ANISOTROPY;
+    for (size_t record = 0; record < mMaterials.size(); ++record) {
+        if (mRecordMaterial[record] != material) continue;
+        MaterialBinding& binding = mMaterials[record];
+        binding.anisotropy = on;
+        binding.features = on ? binding.features | kFlag : binding.features & ~kFlag;
+        mRecords[record].flags.x = (mRecords[record].flags.x & ~kFlag) | (binding.features & kFlag);
         mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
                                &mRecords[record].flags.x);
     }

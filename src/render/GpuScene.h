@@ -31,6 +31,8 @@ struct GpuPrimitive {
 enum class TextureSlot {
     BaseColor, MetallicRoughness, Normal, Occlusion, Emissive,
     Clearcoat, ClearcoatRoughness, ClearcoatNormal, ///< KHR_materials_clearcoat (CLEARCOAT variant only)
+    SheenColor, SheenRoughness, ///< KHR_materials_sheen's slots: unused in this branch (the numbers are shared)
+    Anisotropy,                 ///< KHR_materials_anisotropy (ANISOTROPY variant only)
     Count
 };
 /// The texture unit of each slot (shaders/shared/Bindings.h): the first five are units 0-4.
@@ -43,6 +45,7 @@ struct MaterialBinding {
     bool doubleSided = false;
     float transmission = 0.0f; ///< KHR_materials_transmission factor
     bool clearcoat = false;    ///< KHR_materials_clearcoat: the CLEARCOAT variant, whose units 19-21 are bound
+    bool anisotropy = false;   ///< KHR_materials_anisotropy: the ANISOTROPY variant, whose unit 24 is bound
     uint32_t features = 0; ///< SPECULA_MATERIAL_* bits: selects the shader variant
 };
 
@@ -89,6 +92,9 @@ public:
     /// Sets or clears SPECULA_MATERIAL_CLEARCOAT of `material` (and its copies): a layer of factor
     /// 0 is no layer, so its variant goes.
     void setClearcoat(int material, bool on);
+    /// Sets or clears SPECULA_MATERIAL_ANISOTROPY of `material` (and its copies): strength 0
+    /// is isotropic, so its variant goes.
+    void setAnisotropy(int material, bool on);
     /// Writes `size` bytes at `offset` within `material`'s record (and its copies'), in the
     /// CPU copy and in the buffer: no other byte of the buffer is written.
     void writeMaterial(int material, size_t offset, size_t size, const void* data);

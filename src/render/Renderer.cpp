@@ -203,12 +203,12 @@ struct Renderer::Impl {
 
 Renderer::Renderer() : mImpl(std::make_unique<Impl>())
 {
-    // The forward pass binds units up to SPECULA_UNIT_CLEARCOAT_NORMAL (shaders/shared/Bindings.h).
-    static_assert(SPECULA_UNIT_CLEARCOAT_NORMAL > SPECULA_UNIT_ENVIRONMENT_CUBE && SPECULA_UNIT_ENVIRONMENT_CUBE > SPECULA_UNIT_TRANSMISSION &&
+    // The forward pass binds units up to SPECULA_UNIT_ANISOTROPY (shaders/shared/Bindings.h).
+    static_assert(SPECULA_UNIT_ANISOTROPY > SPECULA_UNIT_CLEARCOAT_NORMAL && SPECULA_UNIT_CLEARCOAT_NORMAL > SPECULA_UNIT_ENVIRONMENT_CUBE && SPECULA_UNIT_ENVIRONMENT_CUBE > SPECULA_UNIT_TRANSMISSION &&
                   SPECULA_UNIT_TRANSMISSION > SPECULA_UNIT_IRRADIANCE);
-    if (gl::maxTextureUnits() <= SPECULA_UNIT_CLEARCOAT_NORMAL)
+    if (gl::maxTextureUnits() <= SPECULA_UNIT_ANISOTROPY)
         throw Error("this OpenGL implementation has {} texture units; Specula needs {}", gl::maxTextureUnits(),
-                    SPECULA_UNIT_CLEARCOAT_NORMAL + 1);
+                    SPECULA_UNIT_ANISOTROPY + 1);
 }
 Renderer::~Renderer() = default;
 
@@ -496,6 +496,8 @@ glm::vec4 Renderer::materialParameter(int material, MaterialParameter parameter)
     case MaterialParameter::SectorLight: return glm::vec4(r.emissive.w * 255.0f, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::ClearcoatFactor: return glm::vec4(r.clearcoat.x, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::ClearcoatRoughness: return glm::vec4(r.clearcoat.y, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::AnisotropyStrength: return glm::vec4(r.anisotropy.x, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::AnisotropyRotation: return glm::vec4(std::atan2(r.anisotropy.z, r.anisotropy.y), 0.0f, 0.0f, 0.0f);
     }
     return glm::vec4(0.0f);
 }
@@ -550,6 +552,17 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::ClearcoatRoughness: {
         const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
         gpu.writeMaterial(material, offsetof(GpuMaterial, clearcoat) + sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::AnisotropyStrength: {
+        const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, anisotropy), sizeof(float), &v.x);
+        gpu.setAnisotropy(material, v.x > 0.0f);
+        break;
+    }
+    case MaterialParameter::AnisotropyRotation: {
+        const glm::vec2 v(std::cos(value.x), std::sin(value.x)); // the record holds cos and sin
+        gpu.writeMaterial(material, offsetof(GpuMaterial, anisotropy) + sizeof(float), 2 * sizeof(float), &v.x);
         break;
     }
     }

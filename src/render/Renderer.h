@@ -44,8 +44,10 @@ enum class MaterialParameter {
     SectorLight,    ///< x, the Doom model's sector light level, 0–255
     ClearcoatFactor,    ///< x, KHR_materials_clearcoat factor (0 = no layer: the CLEARCOAT variant goes)
     ClearcoatRoughness, ///< x, the layer's perceptual roughness
+    AnisotropyStrength, ///< x, KHR_materials_anisotropy strength (0 = isotropic: the ANISOTROPY variant goes)
+    AnisotropyRotation, ///< x, radians counter-clockwise from the tangent
 };
-constexpr int kMaterialParameterCount = int(MaterialParameter::ClearcoatRoughness) + 1;
+constexpr int kMaterialParameterCount = int(MaterialParameter::AnisotropyRotation) + 1;
 
 /// How the specular lobe integrates image-based light (docs/ibl.md).
 enum class IblSpecular {

@@ -320,10 +320,14 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
         primitive.hasTangents = false;
     }
     if (!primitive.hasTangents && primitive.material >= 0) {
-        // The clearcoat layer's normal map needs the tangent frame too.
+        // The clearcoat layer's normal map needs the tangent frame too, and so does anisotropy
+        // (its direction is in it): KHR_materials_anisotropy asks for a normalTexture then, but
+        // without one the anisotropy texture's, or the first, uv set gives the tangents.
         const Material& material = mScene.materials[size_t(primitive.material)];
         const TextureRef& normalTexture = material.normalTexture.valid() ? material.normalTexture : material.clearcoatNormalTexture;
         if (normalTexture.valid()) generateTangents(primitive, normalTexture.texCoord);
+        else if (material.anisotropyStrength > 0.0f)
+            generateTangents(primitive, material.anisotropyTexture.valid() ? material.anisotropyTexture.texCoord : 0);
     }
     return primitive;
 }

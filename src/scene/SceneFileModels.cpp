@@ -77,7 +77,7 @@ const std::vector<std::string_view> kMaterialKeys = {"name", "baseColor", "metal
                                                      "shading", "brdfD", "brdfG", "brdfF", "brdfDiffuse", "ior",
                                                      "shininess", "sectorLight", "transmission", "thickness",
                                                      "attenuationDistance", "attenuationColor", "clearcoat",
-                                                     "clearcoatRoughness"};
+                                                     "clearcoatRoughness", "anisotropyStrength", "anisotropyRotation"};
 
 /// Sets the material's fields that `object` gives; the others keep their values (a shape's
 /// defaults, or a glTF model's material with its textures).
@@ -112,6 +112,9 @@ void applyMaterialKeys(const Object& object, Material& material)
     // KHR_materials_clearcoat's factors (a glTF model's clearcoat textures stay).
     material.clearcoatFactor = object.unitInterval("clearcoat").value_or(material.clearcoatFactor);
     material.clearcoatRoughnessFactor = object.unitInterval("clearcoatRoughness").value_or(material.clearcoatRoughnessFactor);
+    // KHR_materials_anisotropy's factors (a glTF model's anisotropy texture stays).
+    material.anisotropyStrength = object.unitInterval("anisotropyStrength").value_or(material.anisotropyStrength);
+    material.anisotropyRotation = object.number("anisotropyRotation").value_or(material.anisotropyRotation);
     // Material system (docs/scene-format.md): shading model, BRDF terms, F0 from an IOR, Phong exponent.
     if (const auto v = object.choice("shading", {"pbr", "unlit", "flat", "gouraud", "phong", "blinn-phong", "doom"}))
         material.shading.model = parseShadingModel(*v);

@@ -29,6 +29,9 @@ enum class DebugView {
     /// Lights per pixel: the length of each shading point's light list (its cluster's, with
     /// the directional lights), as a heat map with its legend (docs/clustered-shading.md).
     LightCount,
+    /// KHR_materials_anisotropy: the direction in the tangent frame, rotated, as RG = xy × 0.5 +
+    /// 0.5 (the texture's own encoding), and the strength as B; (0.5, 0.5, 0) without anisotropy.
+    Anisotropy,
 };
 
 std::optional<DebugView> parseDebugView(std::string_view name);

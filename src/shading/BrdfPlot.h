@@ -24,6 +24,8 @@ struct BrdfPlotMaterial {
     double shininess = 0.0;        ///< classic exponent; 0 = from roughness (brdf::classicShininess)
     double clearcoat = 0.0;        ///< KHR_materials_clearcoat factor (0 = no layer)
     double clearcoatRoughness = 0.0;
+    /// KHR_materials_anisotropy strength (0 = isotropic); its direction is the plot's tangent.
+    double anisotropy = 0.0;
 };
 
 /// What the curves show for a shading model.
@@ -46,6 +48,10 @@ struct BrdfCurves {
     /// The reflected radiance per unit illuminance: f(l, v) × n·l with the chosen diffuse lobe
     /// (Microfacet, single scattering); (kd n·l + ks lobe) / π (Classic, brdf::evaluateClassic).
     std::vector<float> whole;
+    /// Microfacet with anisotropy: the plane of incidence above holds the tangent (the rougher
+    /// direction, the highlight's long axis); these are D and f × n·l in the plane across it,
+    /// which holds the bitangent. Empty for an isotropic material.
+    std::vector<float> dAcross, wholeAcross;
     double shininess = 0.0; ///< Classic: the exponent used
 };
 

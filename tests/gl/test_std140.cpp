@@ -61,6 +61,10 @@ TEST_F(GlTest, SharedStructsMatchGlslLayout)
     const gl::Program coated({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = {"CLEARCOAT"}});
     EXPECT_EQ(blockSize(coated.id(), GL_UNIFORM_BLOCK, "MaterialBlock"), GLint(sizeof(GpuMaterial)));
     EXPECT_EQ(memberOffset(coated.id(), GL_UNIFORM, "material.clearcoat"), GLint(offsetof(GpuMaterial, clearcoat)));
+    // The anisotropy variant reads its vec4 after clearcoat's and transform 10 of 13.
+    const gl::Program brushed({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = {"ANISOTROPY"}});
+    EXPECT_EQ(blockSize(brushed.id(), GL_UNIFORM_BLOCK, "MaterialBlock"), GLint(sizeof(GpuMaterial)));
+    EXPECT_EQ(memberOffset(brushed.id(), GL_UNIFORM, "material.anisotropy"), GLint(offsetof(GpuMaterial, anisotropy)));
 }
 
 TEST_F(GlTest, PostStructsMatchGlslLayout)
