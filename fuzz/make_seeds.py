@@ -85,6 +85,15 @@ sheen["materials"][0]["extensions"] = {"KHR_materials_sheen": {
     "sheenColorTexture": {"index": 0, "texCoord": 1, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0]}}},
     "sheenRoughnessTexture": {"index": 0}}}
 write("seeds/gltf/sheen.gltf", json.dumps(sheen))
+# KHR_materials_anisotropy: strength, rotation and a texture with texCoord and a transform, no
+# normal map (so the importer makes the tangents for it).
+anisotropy = triangle_gltf("buffer.bin", {"uri": "texture.png"})
+del anisotropy["materials"][0]["normalTexture"]
+anisotropy["materials"][0]["extensions"] = {"KHR_materials_anisotropy": {
+    "anisotropyStrength": 0.8, "anisotropyRotation": 1.2,
+    "anisotropyTexture": {"index": 0, "texCoord": 0, "extensions": {"KHR_texture_transform": {"rotation": 0.5}}}}}
+anisotropy["extensionsUsed"].append("KHR_materials_anisotropy")
+write("seeds/gltf/anisotropy.gltf", json.dumps(anisotropy, indent=1))
 
 def glb(document, binary):
     text = json.dumps(document).encode()

@@ -379,6 +379,8 @@ void Viewer::setMaterialParameter(int index, render::MaterialParameter parameter
     case render::MaterialParameter::Dispersion: m.dispersion = std::max(value.x, 0.0f); break;
     case render::MaterialParameter::SheenColor: m.sheenColorFactor = glm::clamp(glm::vec3(value), 0.0f, 1.0f); break;
     case render::MaterialParameter::SheenRoughness: m.sheenRoughnessFactor = std::clamp(value.x, 0.0f, 1.0f); break;
+    case render::MaterialParameter::AnisotropyStrength: m.anisotropyStrength = std::clamp(value.x, 0.0f, 1.0f); break;
+    case render::MaterialParameter::AnisotropyRotation: m.anisotropyRotation = value.x; break;
     case render::MaterialParameter::PhongSpecular: // the classic ks: only in the record
     case render::MaterialParameter::SpecularColor: break; // colour × ior: setMaterialIor
     }

@@ -276,6 +276,11 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         return 0;
     }
     if (a == "material-roughness") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Roughness, glm::vec4(w.number(2))); return 0; }
+    if (a == "material-anisotropy") {
+        viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::AnisotropyStrength, glm::vec4(w.number(2)));
+        if (w.size() > 3) viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::AnisotropyRotation, glm::vec4(w.number(3)));
+        return 0;
+    }
     if (a == "material-clearcoat") {
         viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::ClearcoatFactor, glm::vec4(w.number(2)));
         if (w.size() > 3) viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::ClearcoatRoughness, glm::vec4(w.number(3)));

@@ -361,6 +361,10 @@ void materialsPanel(Viewer& viewer)
     if (ImGui::ColorEdit3("sheen colour", &sheenColor.x)) set(MaterialParameter::SheenColor, sheenColor);
     float sheenRoughness = value(MaterialParameter::SheenRoughness).x;
     if (ImGui::SliderFloat("sheen roughness", &sheenRoughness, 0.0f, 1.0f)) set(MaterialParameter::SheenRoughness, glm::vec4(sheenRoughness));
+    ImGui::TextDisabled("KHR_materials_anisotropy (GGX)");
+    float anisotropy = value(MaterialParameter::AnisotropyStrength).x, rotation = value(MaterialParameter::AnisotropyRotation).x;
+    if (ImGui::SliderFloat("anisotropy", &anisotropy, 0.0f, 1.0f)) set(MaterialParameter::AnisotropyStrength, glm::vec4(anisotropy));
+    if (ImGui::SliderAngle("anisotropy rotation", &rotation, -180.0f, 180.0f)) set(MaterialParameter::AnisotropyRotation, glm::vec4(rotation));
     ImGui::Separator();
     ImGui::TextDisabled("Phong, Blinn-Phong, Gouraud, flat");
     glm::vec4 ks = value(MaterialParameter::PhongSpecular);
@@ -399,6 +403,7 @@ void brdfPanel(Viewer& viewer)
     }
     material.sheenColor = glm::dvec3(glm::vec3(value(MaterialParameter::SheenColor)));
     material.sheenRoughness = value(MaterialParameter::SheenRoughness).x;
+    material.anisotropy = value(MaterialParameter::AnisotropyStrength).x;
     const render::FrameSettings& settings = viewer.settings();
     const render::ResolvedShading shading =
         render::resolveShading(settings.materialOverride, settings.brdfGeometry, render::packShading(renderer.materialShading(m)));
@@ -428,6 +433,12 @@ void brdfPanel(Viewer& viewer)
         ImGui::PlotLines("f x NoL", curves.whole.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
         if (!curves.sheen.empty())
             ImGui::PlotLines("sheen x NoL (Charlie)", curves.sheen.data(), int(curves.sheen.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        if (!curves.wholeAcross.empty()) {
+            // KHR_materials_anisotropy: the curves above lie along the tangent; these across it.
+            ImGui::TextDisabled("anisotropic: above along the tangent, below across it");
+            ImGui::PlotLines("D across", curves.dAcross.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+            ImGui::PlotLines("f x NoL across", curves.wholeAcross.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
+        }
         break;
     }
 }
@@ -550,7 +561,7 @@ void postPanel(Viewer& viewer)
     }
     if (ImGui::BeginCombo("debug view", debugViewName(s.debugView))) {
         // Every view up to the last one (BrdfF), material inputs and BRDF terms included.
-        for (int k = 0; k <= int(DebugView::LightCount); ++k) {
+        for (int k = 0; k <= int(DebugView::Anisotropy); ++k) {
             const auto d = DebugView(k);
             if (ImGui::Selectable(debugViewName(d), d == s.debugView)) s.debugView = d;
         }

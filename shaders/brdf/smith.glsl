@@ -42,3 +42,16 @@ float V_SmithGGXCorrelated(float NoV, float NoL, float alpha)
     // 1e-7: grazing NoL = NoV = 0 carries no energy but would divide by zero.
     return 0.5 / max(lambdaV + lambdaL, 1e-7);
 }
+
+// Anisotropic height-correlated Smith G for GGX: Heitz 2014, eq. 99 with the anisotropic
+// Lambda (eq. 86: alpha along each direction's azimuth), as V (KHR_materials_anisotropy's
+// V_GGX_anisotropic; Filament's V_SmithGGXCorrelated_Anisotropic). at = ab = alpha is
+// V_SmithGGXCorrelated.
+float V_SmithGGXCorrelatedAnisotropic(float NoV, float NoL, float ToV, float BoV, float ToL, float BoL, float at, float ab)
+{
+    float lambdaV = NoL * length(vec3(at * ToV, ab * BoV, NoV));
+    float lambdaL = NoV * length(vec3(at * ToL, ab * BoL, NoL));
+    // The extension clamps V to [0, 1] ("Implementation"), which V_SmithGGXCorrelated does not:
+    // kept, as the extension is the reference (it darkens only grazing n.v n.l, where V > 1).
+    return min(0.5 / max(lambdaV + lambdaL, 1e-7), 1.0);
+}

@@ -8,7 +8,7 @@
 #if defined(DEBUG_VIEW_BASE_COLOR) || defined(DEBUG_VIEW_NORMAL) || defined(DEBUG_VIEW_ROUGHNESS) || \
     defined(DEBUG_VIEW_METALLIC) || defined(DEBUG_VIEW_OCCLUSION) || defined(DEBUG_VIEW_EMISSIVE) || \
     defined(DEBUG_VIEW_BRDF_D) || defined(DEBUG_VIEW_BRDF_G) || defined(DEBUG_VIEW_BRDF_F) || defined(DEBUG_VIEW_CASCADES) || \
-    defined(DEBUG_VIEW_LIGHT_COUNT) || defined(DEBUG_VIEW_SHEEN)
+    defined(DEBUG_VIEW_LIGHT_COUNT) || defined(DEBUG_VIEW_SHEEN) || defined(DEBUG_VIEW_ANISOTROPY)
 #define DEBUG_VIEW
 #endif
 
@@ -35,6 +35,23 @@ vec3 debugBrdfTerm(vec3 baseColor, float metallic, float perceptualRoughness, ve
     float NoV = abs(dot(n, v));
     float NoH = saturate(dot(n, h));
     float VoH = saturate(dot(v, h));
+#if defined(ANISOTROPY) && (defined(DEBUG_VIEW_BRDF_D) || defined(DEBUG_VIEW_BRDF_G))
+    // KHR_materials_anisotropy's D and G (forward/anisotropy.glsl) in the frame pbr.frag gives it.
+    vec3 ng = normalize(vNormal);
+#if defined(DOUBLE_SIDED)
+    bool flip = !gl_FrontFacing;
+    if (flip) ng = -ng;
+#else
+    const bool flip = false;
+#endif
+    AnisotropicLobe a = makeAnisotropicLobe(n, ng, flip);
+    vec2 alphas = anisotropicAlphas(a, s.alpha);
+#if defined(DEBUG_VIEW_BRDF_D)
+    return vec3(D_GGX_Anisotropic(NoH, dot(a.t, h), dot(a.b, h), alphas.x, alphas.y) / D_GGX_Anisotropic(1.0, 0.0, 0.0, alphas.x, alphas.y));
+#else
+    return vec3(V_SmithGGXCorrelatedAnisotropic(NoV, NoL, dot(a.t, v), dot(a.b, v), dot(a.t, l), dot(a.b, l), alphas.x, alphas.y) * 4.0 * NoL * NoV);
+#endif
+#endif
 #if defined(DEBUG_VIEW_BRDF_D)
     return vec3(brdfD(NoH, s.alpha) / brdfD(1.0, s.alpha));
 #elif defined(DEBUG_VIEW_BRDF_G)
@@ -70,6 +87,14 @@ vec3 debugViewValue(vec3 baseColor, float metallic, float perceptualRoughness, v
     // The length of this point's light list (its cluster's, directional lights included), in
     // the heat map's bins (shared/ClusterData.h; the legend is render/passes/DebugViewPass's).
     return srgbToLinear(vec3(lightCountColor(lightCountBin(lightList(vWorldPosition, gl_FragCoord).count))));
+#elif defined(DEBUG_VIEW_ANISOTROPY)
+    // KHR_materials_anisotropy's direction (x 0.5 + 0.5) and strength, as its texture holds them.
+#if defined(ANISOTROPY)
+    vec3 ds = anisotropyDirectionStrength();
+    return debugBytes(vec3(ds.xy * 0.5 + 0.5, ds.z));
+#else
+    return debugBytes(vec3(0.5, 0.5, 0.0));
+#endif
 #elif defined(DEBUG_VIEW_CASCADES)
     // The first directional light with cascades: its cascade's colour, darkened in its shadow;
     // grey beyond the shadow distance or without one.

@@ -4,7 +4,8 @@
 // Material features are compile-time variants (see Renderer's variant key): HAS_*_TEXTURE,
 // VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND (premultiplied output; BLEND_TRANSPARENT: specular and
 // emission unscaled by alpha), TRANSMISSION (forward/transmission.glsl), CLEARCOAT
-// (forward/clearcoat.glsl), SHEEN (forward/sheen.glsl), DOUBLE_SIDED; OIT
+// (forward/clearcoat.glsl), SHEEN (forward/sheen.glsl), ANISOTROPY (forward/anisotropy.glsl),
+// DOUBLE_SIDED; OIT
 // (weighted blended transparency's two targets); per frame, SSAO, and DOOM_INDEXED (a
 // Doom frame: with SHADING_DOOM, the output is a palette index and a colour-map level, not a
 // colour; render/DoomPass). A material without a feature pays nothing for it; without
@@ -73,6 +74,9 @@ const float kHalfMax = 65504.0;
 #endif
 #if defined(SHEEN)
 #include "sheen.glsl"
+#endif
+#if defined(ANISOTROPY)
+#include "anisotropy.glsl"
 #endif
 #include "shading_models.glsl"
 #include "debug_views.glsl"
@@ -152,8 +156,9 @@ void main()
 #else
     const bool flip = false;
 #endif
-#if defined(CLEARCOAT)
-    vec3 geometricNormal = n; // the clearcoat layer's, unless it has a normal map of its own
+#if defined(CLEARCOAT) || defined(ANISOTROPY)
+    // The clearcoat layer's, unless it has a normal map of its own; the anisotropy's tangent frame.
+    vec3 geometricNormal = n;
 #endif
 #if defined(HAS_NORMAL_TEXTURE)
     vec3 t = vTangent.xyz - n * dot(n, vTangent.xyz);
@@ -195,6 +200,13 @@ void main()
     SurfaceBrdf surface = makeSurfaceBrdf(baseColor.rgb, metallic, perceptualRoughness, material.specular);
 
     float NoV = max(dot(n, v), 1e-4); // 1e-4: normal-mapped texels can face away from the viewer
+#if defined(ANISOTROPY)
+    AnisotropicLobe anisotropy = makeAnisotropicLobe(n, geometricNormal, flip);
+    // The split-sum table holds isotropic lobes: the one of about the same albedo.
+    float tableRoughness = anisotropicTableRoughness(anisotropy, perceptualRoughness);
+#else
+    float tableRoughness = perceptualRoughness;
+#endif
 #if defined(CLEARCOAT)
     ClearcoatLayer coat = makeClearcoat(geometricNormal, flip, v);
     vec3 coatLight = vec3(0.0); // the layer's own reflection, added over the dimmed base
@@ -207,7 +219,7 @@ void main()
 #if defined(IBL) || defined(ENERGY_COMPENSATION)
     // Split-sum DFG terms of this draw's own D, G and F (the renderer binds the table baked for
     // its variant): single-scattering specular albedo E = f0 * dfg.x + f90 * dfg.y.
-    vec2 dfg = texture(uDfg, vec2(NoV, perceptualRoughness)).rg;
+    vec2 dfg = texture(uDfg, vec2(NoV, tableRoughness)).rg;
 #if defined(BRDF_F_NONE)
     // F = f0 at every angle, so f0 scales the grazing term too: E = f0 (dfg.x + dfg.y). The
     // variant reads Schlick's table, whose sum is the integral without F (dfgVariant).
@@ -248,7 +260,11 @@ void main()
         sheenLight += sheenPunctual(sheen, n, v, l, NoV, NoL) * illuminance;
 #endif
         vec3 diffuse, specular;
+#if defined(ANISOTROPY)
+        evaluateAnisotropicLobes(surface, anisotropy, n, v, l, diffuse, specular);
+#else
         evaluateBrdfLobes(surface, n, v, l, diffuse, specular);
+#endif
         diffuseLight += diffuse * illuminance * NoL;
         specularLight += specular * energyCompensation * illuminance * NoL;
     }
@@ -257,18 +273,41 @@ void main()
     diffuseLight += frame.ambient.rgb * surface.diffuseColor * occlusion;
 
 #if defined(IBL)
-    vec3 r = reflect(-v, n);
+#if defined(ANISOTROPY)
+    // The split sum's reflection off the bent normal (forward/anisotropy.glsl).
+    vec3 lookupNormal = anisotropicBentNormal(anisotropy, n, v, iblRoughness);
+#else
+    vec3 lookupNormal = n;
+#endif
+    vec3 r = reflect(-v, lookupNormal);
     // With KHR_materials_specular's F90 < 1 the split sum's grazing term scales with it.
     vec3 specularAlbedo = (surface.f0 * dfg.x + surface.f90 * dfg.y) * energyCompensation;
+#if defined(IBL_IMPORTANCE) && defined(ANISOTROPY)
+    // The anisotropic lobe per pixel; its split-sum terms (the albedo the diffuse lobe leaves,
+    // the compensation) from the same samples: the table's are an isotropic lobe's, which at
+    // grazing angles can reflect far less than a lobe that is smooth across b.
+    vec2 sampledDfg;
+    vec3 specularIbl = importanceSampledSpecularAnisotropic(surface, n, anisotropy.t, anisotropy.b,
+                                                            anisotropicAlphas(anisotropy, iblRoughness * iblRoughness), v, sampledDfg);
+#if defined(ENERGY_COMPENSATION)
+    vec3 sampledCompensation = 1.0 + surface.f0 * (1.0 / max(sampledDfg.x + sampledDfg.y, 1e-4) - 1.0);
+#else
+    const vec3 sampledCompensation = vec3(1.0);
+#endif
+    specularIbl *= sampledCompensation;
+    specularAlbedo = (surface.f0 * sampledDfg.x + surface.f90 * sampledDfg.y) * sampledCompensation;
+#endif
     // What the specular lobe reflects, the diffuse lobe below it cannot: 1 - E keeps a white
     // dielectric in a white furnace at or below the environment's radiance.
     vec3 diffuseIbl = irradianceCube(toEnvironment(n)) * surface.diffuseColor * INV_PI * (1.0 - specularAlbedo);
-#if defined(IBL_IMPORTANCE)
+#if defined(IBL_IMPORTANCE) && defined(ANISOTROPY)
+    // Above, before the diffuse lobe's 1 - E.
+#elif defined(IBL_IMPORTANCE)
     // The lobe integrated per pixel with this material's BRDF (ibl/importance.glsl); the
     // diffuse lobe keeps the split sum's 1 - E, E the DFG table's.
     vec3 specularIbl = importanceSampledSpecular(surface, n, v, iblRoughness) * energyCompensation;
 #else
-    vec3 specularIbl = prefilteredRadiance(specularDominantDirection(n, r, iblRoughness), iblRoughness) * specularAlbedo;
+    vec3 specularIbl = prefilteredRadiance(specularDominantDirection(lookupNormal, r, iblRoughness), iblRoughness) * specularAlbedo;
 #endif
     float specularAo = specularOcclusion(NoV, occlusion, perceptualRoughness);
 #if defined(HAS_NORMAL_TEXTURE)

@@ -60,3 +60,52 @@ vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float percep
     }
     return sum / float(IBL_IMPORTANCE_SAMPLES);
 }
+
+#if defined(ANISOTROPY)
+// importanceSampledSpecular for KHR_materials_anisotropy's lobe (forward/anisotropy.glsl):
+// half vectors from D_GGX_Anisotropic, the extension's anisotropic V. `albedo` is the same
+// samples' estimate of the lobe's split-sum terms, as the DFG table holds them (albedo = f0 x +
+// f90 y): the table has only isotropic lobes.
+// t, b, n: the lobe's orthonormal frame; alphas: its alpha_t and alpha_b (unclamped).
+vec3 importanceSampledSpecularAnisotropic(SurfaceBrdf surface, vec3 n, vec3 t, vec3 b, vec2 alphas, vec3 v, out vec2 dfg)
+{
+    float NoV = max(dot(n, v), 1e-4);
+    // The mirror's: F(n.v) = f0 (1 - Fc) + f90 Fc.
+    dfg = vec2(1.0 - brdfFresnelWeight(NoV), brdfFresnelWeight(NoV));
+    // Only a mirror in both directions is one (strength 0 at roughness 0): as the isotropic one.
+    if (alphas.x < 1e-4) {
+        vec3 r = reflect(-v, n);
+        return brdfF(surface, NoV) * textureLod(uEnvironmentCube, toEnvironment(r), 0.0).rgb;
+    }
+    // Below roughness 0.01 across the lobe its samples would all fall on a line; the floor
+    // (the punctual lights' 0.045, alpha 0.002) keeps D finite and is narrower than a texel.
+    alphas.y = max(alphas.y, 0.002);
+    float faceSize = float(textureSize(uEnvironmentCube, 0).x);
+    float texelSolidAngle = 4.0 * PI / (6.0 * faceSize * faceSize);
+    mat3 basis = mat3(t, b, n);
+    vec3 sum = vec3(0.0);
+    vec2 terms = vec2(0.0);
+    for (uint i = 0u; i < uint(IBL_IMPORTANCE_SAMPLES); ++i) {
+        vec2 xi = hammersley(i, uint(IBL_IMPORTANCE_SAMPLES));
+        vec3 hl = importanceSampleGgxAnisotropic(xi, alphas.x, alphas.y);
+        vec3 h = basis * hl;
+        float VoH = dot(v, h);
+        vec3 l = 2.0 * VoH * h - v;
+        float NoL = dot(n, l);
+        if (NoL <= 0.0 || VoH <= 0.0) continue;
+        float NoH = hl.z;
+        // pdf(l) = D(h) (n.h) / (4 v.h), as the isotropic sampler's.
+        float pdf = D_GGX_Anisotropic(NoH, hl.x, hl.y, alphas.x, alphas.y) * NoH / (4.0 * VoH);
+        float lod = max(0.5 * log2(1.0 / (float(IBL_IMPORTANCE_SAMPLES) * pdf * texelSolidAngle)) + kIblLodBias, 0.0);
+        vec3 radiance = textureLod(uEnvironmentCube, toEnvironment(l), lod).rgb;
+        // f_s (n.l) / pdf = F V (n.l) 4 (v.h) / (n.h).
+        float weight = V_SmithGGXCorrelatedAnisotropic(NoV, NoL, dot(t, v), dot(b, v), dot(t, l), dot(b, l), alphas.x, alphas.y) *
+                       NoL * 4.0 * VoH / max(NoH, 1e-6);
+        sum += brdfF(surface, VoH) * weight * radiance;
+        float fc = brdfFresnelWeight(VoH);
+        terms += weight * vec2(1.0 - fc, fc);
+    }
+    dfg = terms / float(IBL_IMPORTANCE_SAMPLES);
+    return sum / float(IBL_IMPORTANCE_SAMPLES);
+}
+#endif

@@ -49,3 +49,16 @@ mat3 basisAround(vec3 n)
     vec3 bt = vec3(b, s + n.y * n.y * a, -n.y);
     return mat3(t, bt, n);
 }
+
+// Half vector around +Z (tangent +X, bitangent +Y) distributed as D_GGX_Anisotropic(h) (n.h):
+// GGX's slopes are those of roughness 1 stretched by (at, ab) (Heitz 2014, "Understanding the
+// Masking-Shadowing Function", section 5.3), so a slope of the unit lobe (tan θ = sqrt(ξ / (1 -
+// ξ)), Walter et al. 2007 eq. 35 at alpha 1) scaled per axis gives h = normalize(slope, 1) (the
+// slope's sign is immaterial: the lobe is symmetric).
+vec3 importanceSampleGgxAnisotropic(vec2 xi, float at, float ab)
+{
+    float phi = 2.0 * PI * xi.x;
+    // xi.y < 1 for Hammersley points; the clamp keeps a last point finite anyway.
+    float tanTheta = sqrt(xi.y / max(1.0 - xi.y, 1e-7));
+    return normalize(vec3(at * tanTheta * cos(phi), ab * tanTheta * sin(phi), 1.0));
+}

@@ -25,6 +25,7 @@ SPECULA_SHARED_BEGIN
 // Bits 16-30 of a material's feature word hold its shading choice (shading/ShadingVariant.h).
 #define SPECULA_MATERIAL_DISPERSION 0x80000000u // KHR_materials_dispersion above 0 on a volume
 #define SPECULA_MATERIAL_SHEEN 8192u            // KHR_materials_sheen colour factor above 0
+#define SPECULA_MATERIAL_ANISOTROPY 16384u      // KHR_materials_anisotropy strength above 0 (GGX only)
 
 struct GpuMaterial {
     vec4 baseColorFactor;
@@ -34,7 +35,7 @@ struct GpuMaterial {
     uvec4 flags;          // x SPECULA_MATERIAL_* bits; y texCoord sets, 2 bits per texture
                           // (base colour, metallic-roughness, normal, occlusion, emissive,
                           // clearcoat, clearcoat roughness, clearcoat normal, sheen colour,
-                          // sheen roughness; 13 slots in all across the material extensions)
+                          // sheen roughness, anisotropy, iridescence, iridescence thickness: 13)
     vec4 uvTransform[26]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
     vec4 specular;        // KHR_materials_specular: rgb specularColorFactor, a specularFactor; rgb also
                           // carries KHR_materials_ior: x (F0(ior) / 0.04), so 0.04 x rgb is the dielectric F0
@@ -47,10 +48,12 @@ struct GpuMaterial {
     vec4 clearcoat;       // KHR_materials_clearcoat: x clearcoatFactor, y clearcoatRoughnessFactor
                           // (perceptual), z clearcoat normal texture scale
     vec4 sheen;           // KHR_materials_sheen: rgb sheenColorFactor (linear), a sheenRoughnessFactor (perceptual)
+    vec4 anisotropy;      // KHR_materials_anisotropy: x anisotropyStrength, y cos, z sin of anisotropyRotation,
+                          // w 1 with an anisotropyTexture (read at run time by the ANISOTROPY variant)
 };
 
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::GpuMaterial) == 37 * 16);
+static_assert(sizeof(specula::shared::GpuMaterial) == 38 * 16);
 #endif

@@ -11,6 +11,23 @@
 #include "shaders/shared/MaterialData.h"
 
 namespace specula::render {
+namespace {
+
+// An extension's texture slots are bound only for the variant that samples them.
+bool sampledByVariant(const MaterialBinding& m, TextureSlot slot)
+{
+    switch (slot) {
+    case TextureSlot::Clearcoat:
+    case TextureSlot::ClearcoatRoughness:
+    case TextureSlot::ClearcoatNormal: return m.clearcoat;
+    case TextureSlot::SheenColor:
+    case TextureSlot::SheenRoughness: return m.sheen;
+    case TextureSlot::Anisotropy: return m.anisotropy;
+    default: return true;
+    }
+}
+
+} // namespace
 
 uint32_t DrawList::orderedBits(float value)
 {
@@ -98,9 +115,7 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
         if (options.textures == MaterialTextures::All) {
             // An extension's slots only for the variant that samples them.
             for (size_t slot = 0; slot < size_t(TextureSlot::Count); ++slot) {
-                const bool clearcoatSlot = slot >= size_t(TextureSlot::Clearcoat) && slot <= size_t(TextureSlot::ClearcoatNormal);
-                const bool sheenSlot = slot == size_t(TextureSlot::SheenColor) || slot == size_t(TextureSlot::SheenRoughness);
-                if ((clearcoatSlot && !m.clearcoat) || (sheenSlot && !m.sheen)) continue;
+                if (!sampledByVariant(m, TextureSlot(slot))) continue;
                 const gl::Texture* texture = m.textures[slot];
                 const bool normal = slot == size_t(TextureSlot::Normal) || slot == size_t(TextureSlot::ClearcoatNormal);
                 if (!texture) texture = normal ? options.flatNormal : options.white;

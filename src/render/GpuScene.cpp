@@ -1,6 +1,7 @@
 #include "render/GpuScene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <map>
@@ -104,6 +105,7 @@ int textureUnit(TextureSlot slot)
     case TextureSlot::ClearcoatNormal: return SPECULA_UNIT_CLEARCOAT_NORMAL;
     case TextureSlot::SheenColor: return SPECULA_UNIT_SHEEN_COLOR;
     case TextureSlot::SheenRoughness: return SPECULA_UNIT_SHEEN_ROUGHNESS;
+    case TextureSlot::Anisotropy: return SPECULA_UNIT_ANISOTROPY;
     default: return int(slot);
     }
 }
@@ -212,6 +214,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
         gpu.attenuation = glm::vec4(m.attenuationColor, m.dispersion);
         gpu.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughnessFactor, m.clearcoatNormalScale, 0.0f);
         gpu.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughnessFactor);
+        // The rotation as its cosine and sine: the shader turns the direction with them.
+        gpu.anisotropy = glm::vec4(m.anisotropyStrength, std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), 0.0f);
         // Classic models' specular colour: mid grey, a plastic highlight (Phong 1975's ks).
         gpu.phong = glm::vec4(glm::vec3(0.5f), m.shininess);
         for (int slot = 0; slot < int(TextureSlot::Count); ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
@@ -239,6 +243,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
             // Read only by the SHEEN variant, which samples both always (white without one).
             {m.sheenColorTexture, TextureSlot::SheenColor, true, 0u},
             {m.sheenRoughnessTexture, TextureSlot::SheenRoughness, false, 0u},
+            // Read only by the ANISOTROPY variant, where anisotropy.w says there is one (linear).
+            {m.anisotropyTexture, TextureSlot::Anisotropy, false, 0u},
         };
         for (const auto& s : slots) {
             if (!s.ref.valid()) continue;
@@ -248,6 +254,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
             binding.samplers[size_t(s.slot)] = sampler(scene, s.ref.sampler);
             gpu.flags.x |= s.flag;
             packTransform(gpu, int(s.slot), s.ref);
+            if (s.slot == TextureSlot::Anisotropy) gpu.anisotropy.w = 1.0f;
         }
         if (m.doubleSided) gpu.flags.x |= SPECULA_MATERIAL_DOUBLE_SIDED;
         if (m.alphaMode == scene::AlphaMode::Mask) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_MASK;
@@ -263,6 +270,9 @@ GpuScene::GpuScene(const scene::Scene& scene)
         // A black sheen colour is no sheen (the extension's words); the texture only scales it.
         binding.sheen = glm::any(glm::greaterThan(m.sheenColorFactor, glm::vec3(0.0f)));
         if (binding.sheen) gpu.flags.x |= SPECULA_MATERIAL_SHEEN;
+        // Strength 0 is the isotropic lobe (the texture's blue only scales it): no variant.
+        binding.anisotropy = m.anisotropyStrength > 0.0f;
+        if (binding.anisotropy) gpu.flags.x |= SPECULA_MATERIAL_ANISOTROPY;
         // The shading model and BRDF terms select the variant too (not read by the shaders).
         binding.features = gpu.flags.x | packShading(m.shading);
         gpuMaterials.push_back(gpu);
@@ -481,30 +491,20 @@ void GpuScene::setBlendMode(int material, scene::BlendMode mode)
     }
 }
 
-void GpuScene::setClearcoat(int material, bool on)
-{
-    setFeature(material, SPECULA_MATERIAL_CLEARCOAT, on);
-    for (size_t record = 0; record < mMaterials.size(); ++record)
-        if (mRecordMaterial[record] == material) mMaterials[record].clearcoat = on;
-}
-
 void GpuScene::setFeature(int material, uint32_t bit, bool on)
 {
     for (size_t record = 0; record < mMaterials.size(); ++record) {
         if (mRecordMaterial[record] != material) continue;
         MaterialBinding& binding = mMaterials[record];
         binding.features = on ? binding.features | bit : binding.features & ~bit;
+        // The layers' texture units are bound for their variants only (DrawList).
+        binding.clearcoat = (binding.features & SPECULA_MATERIAL_CLEARCOAT) != 0;
+        binding.sheen = (binding.features & SPECULA_MATERIAL_SHEEN) != 0;
+        binding.anisotropy = (binding.features & SPECULA_MATERIAL_ANISOTROPY) != 0;
         mRecords[record].flags.x = (mRecords[record].flags.x & ~bit) | (binding.features & bit);
         mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
                                &mRecords[record].flags.x);
     }
-}
-
-void GpuScene::setSheen(int material, bool on)
-{
-    setFeature(material, SPECULA_MATERIAL_SHEEN, on);
-    for (size_t record = 0; record < mMaterials.size(); ++record)
-        if (mRecordMaterial[record] == material) mMaterials[record].sheen = on;
 }
 
 void GpuScene::writeMaterial(int material, size_t offset, size_t size, const void* data)

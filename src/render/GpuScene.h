@@ -35,7 +35,8 @@ struct GpuPrimitive {
 enum class TextureSlot {
     BaseColor, MetallicRoughness, Normal, Occlusion, Emissive,
     Clearcoat, ClearcoatRoughness, ClearcoatNormal, ///< KHR_materials_clearcoat (CLEARCOAT variant only)
-    SheenColor = 8, SheenRoughness = 9,             ///< KHR_materials_sheen (SHEEN variant only)
+    SheenColor, SheenRoughness,                     ///< KHR_materials_sheen (SHEEN variant only)
+    Anisotropy,                                     ///< KHR_materials_anisotropy (ANISOTROPY variant only)
     Count
 };
 /// The texture unit of each slot (shaders/shared/Bindings.h): the first five are units 0-4.
@@ -49,6 +50,7 @@ struct MaterialBinding {
     float transmission = 0.0f; ///< KHR_materials_transmission factor
     bool clearcoat = false;    ///< KHR_materials_clearcoat: the CLEARCOAT variant, whose units 19-21 are bound
     bool sheen = false;        ///< KHR_materials_sheen: the SHEEN variant, whose units 22-23 are bound
+    bool anisotropy = false;   ///< KHR_materials_anisotropy: the ANISOTROPY variant, whose unit 24 is bound
     uint32_t features = 0; ///< SPECULA_MATERIAL_* bits: selects the shader variant
 };
 
@@ -92,15 +94,10 @@ public:
     void setShading(int material, const scene::MaterialShading& shading);
     /// Sets or clears SPECULA_MATERIAL_BLEND_TRANSPARENT of a blended material (and its copies).
     void setBlendMode(int material, scene::BlendMode mode);
-    /// Sets or clears SPECULA_MATERIAL_CLEARCOAT of `material` (and its copies): a layer of factor
-    /// 0 is no layer, so its variant goes.
-    void setClearcoat(int material, bool on);
     /// Sets or clears feature bit `bit` (a SPECULA_MATERIAL_* that selects a variant) of
-    /// `material` and its copies, in the variant key and the uploaded record.
+    /// `material` and its copies, in the variant key and the uploaded record (a clearcoat of
+    /// factor 0, a black sheen, anisotropy of strength 0: the variant goes, and its textures).
     void setFeature(int material, uint32_t bit, bool on);
-    /// Sets or clears SPECULA_MATERIAL_SHEEN of `material` (and its copies): a black sheen is
-    /// no sheen, so its variant goes.
-    void setSheen(int material, bool on);
     /// Writes `size` bytes at `offset` within `material`'s record (and its copies'), in the
     /// CPU copy and in the buffer: no other byte of the buffer is written.
     void writeMaterial(int material, size_t offset, size_t size, const void* data);

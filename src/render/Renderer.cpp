@@ -204,7 +204,8 @@ struct Renderer::Impl {
 Renderer::Renderer() : mImpl(std::make_unique<Impl>())
 {
     // The forward pass binds units up to SPECULA_UNIT_SHEEN_ALBEDO (shaders/shared/Bindings.h).
-    static_assert(SPECULA_UNIT_SHEEN_ALBEDO > SPECULA_UNIT_SHEEN_ROUGHNESS && SPECULA_UNIT_SHEEN_ROUGHNESS > SPECULA_UNIT_CLEARCOAT_NORMAL &&
+    static_assert(SPECULA_UNIT_SHEEN_ALBEDO > SPECULA_UNIT_ANISOTROPY && SPECULA_UNIT_ANISOTROPY > SPECULA_UNIT_SHEEN_ROUGHNESS &&
+                  SPECULA_UNIT_SHEEN_ROUGHNESS > SPECULA_UNIT_CLEARCOAT_NORMAL &&
                   SPECULA_UNIT_CLEARCOAT_NORMAL > SPECULA_UNIT_ENVIRONMENT_CUBE && SPECULA_UNIT_ENVIRONMENT_CUBE > SPECULA_UNIT_TRANSMISSION &&
                   SPECULA_UNIT_TRANSMISSION > SPECULA_UNIT_IRRADIANCE);
     if (gl::maxTextureUnits() <= SPECULA_UNIT_SHEEN_ALBEDO)
@@ -506,6 +507,8 @@ glm::vec4 Renderer::materialParameter(int material, MaterialParameter parameter)
     case MaterialParameter::Dispersion: return glm::vec4(r.attenuation.w, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::SheenColor: return glm::vec4(glm::vec3(r.sheen), 0.0f);
     case MaterialParameter::SheenRoughness: return glm::vec4(r.sheen.w, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::AnisotropyStrength: return glm::vec4(r.anisotropy.x, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::AnisotropyRotation: return glm::vec4(std::atan2(r.anisotropy.z, r.anisotropy.y), 0.0f, 0.0f, 0.0f);
     }
     return glm::vec4(0.0f);
 }
@@ -554,7 +557,7 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::ClearcoatFactor: {
         const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
         gpu.writeMaterial(material, offsetof(GpuMaterial, clearcoat), sizeof(float), &v.x);
-        gpu.setClearcoat(material, v.x > 0.0f);
+        gpu.setFeature(material, SPECULA_MATERIAL_CLEARCOAT, v.x > 0.0f);
         break;
     }
     case MaterialParameter::ClearcoatRoughness: {
@@ -571,12 +574,23 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::SheenColor: {
         const glm::vec3 v = glm::clamp(glm::vec3(value), 0.0f, 1.0f);
         gpu.writeMaterial(material, offsetof(GpuMaterial, sheen), 3 * sizeof(float), &v.x);
-        gpu.setSheen(material, glm::any(glm::greaterThan(v, glm::vec3(0.0f))));
+        gpu.setFeature(material, SPECULA_MATERIAL_SHEEN, glm::any(glm::greaterThan(v, glm::vec3(0.0f))));
         break;
     }
     case MaterialParameter::SheenRoughness: {
         const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
         gpu.writeMaterial(material, offsetof(GpuMaterial, sheen) + 3 * sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::AnisotropyStrength: {
+        const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, anisotropy), sizeof(float), &v.x);
+        gpu.setFeature(material, SPECULA_MATERIAL_ANISOTROPY, v.x > 0.0f);
+        break;
+    }
+    case MaterialParameter::AnisotropyRotation: {
+        const glm::vec2 v(std::cos(value.x), std::sin(value.x)); // the record holds cos and sin
+        gpu.writeMaterial(material, offsetof(GpuMaterial, anisotropy) + sizeof(float), 2 * sizeof(float), &v.x);
         break;
     }
     }

@@ -49,8 +49,10 @@ enum class MaterialParameter {
     Dispersion,
     SheenColor,         ///< rgb, KHR_materials_sheen colour factor (black = no sheen: the SHEEN variant goes)
     SheenRoughness,     ///< x, the sheen's perceptual roughness
+    AnisotropyStrength, ///< x, KHR_materials_anisotropy strength (0 = isotropic: the ANISOTROPY variant goes)
+    AnisotropyRotation, ///< x, radians counter-clockwise from the tangent
 };
-constexpr int kMaterialParameterCount = int(MaterialParameter::SheenRoughness) + 1;
+constexpr int kMaterialParameterCount = int(MaterialParameter::AnisotropyRotation) + 1;
 
 /// How the specular lobe integrates image-based light (docs/ibl.md).
 enum class IblSpecular {

@@ -25,6 +25,7 @@ constexpr std::string_view kSupportedExtensions[] = {
     "EXT_texture_webp",           // WebP images decoded with libwebp (GltfMaterials.cpp)
     "KHR_draco_mesh_compression", // primitives decoded with Draco (GltfCompression.cpp)
     "KHR_lights_punctual",
+    "KHR_materials_anisotropy", // the anisotropic specular lobe (Material::anisotropy*)
     "KHR_materials_clearcoat", // the clearcoat layer (Material::clearcoat*)
     "KHR_materials_dispersion", // per-channel refraction through a volume (Material::dispersion)
     "KHR_materials_emissive_strength",

@@ -341,6 +341,13 @@ void Importer::convertMaterials()
             material.sheenColorTexture = extensionTexture(*sheen, "sheenColorTexture", where);
             material.sheenRoughnessTexture = extensionTexture(*sheen, "sheenRoughnessTexture", where);
         }
+        // KHR_materials_anisotropy: strength (0 to 1), rotation (radians, any), the texture.
+        if (const tinygltf::Value* anisotropy = extension(source.extensions, "KHR_materials_anisotropy")) {
+            material.anisotropyStrength = float(std::clamp(number(*anisotropy, "anisotropyStrength").value_or(0.0), 0.0, 1.0));
+            const double rotation = number(*anisotropy, "anisotropyRotation").value_or(0.0);
+            material.anisotropyRotation = std::isfinite(rotation) ? float(std::remainder(rotation, 2.0 * 3.14159265358979323846)) : 0.0f;
+            material.anisotropyTexture = extensionTexture(*anisotropy, "anisotropyTexture", where);
+        }
         // KHR_materials_unlit: colour = the base colour term (factor × texture × vertex colour),
         // whatever the lights and the environment. The other PBR properties are only the fallback
         // of viewers without the extension (kept for --shading pbr), but emission is no part of

@@ -321,7 +321,9 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
         primitive.hasTangents = false;
     }
     // A normal map needs the tangent frame: the material's, or a variant's (the clearcoat
-    // layer's normal map too).
+    // layer's normal map too), and so does anisotropy (its direction is in it):
+    // KHR_materials_anisotropy asks for a normalTexture then, but without one the anisotropy
+    // texture's, or the first, uv set gives the tangents.
     std::vector<int> materials = {primitive.material};
     for (const VariantMapping& mapping : primitive.variants) materials.push_back(mapping.material);
     for (int index : materials) {
@@ -329,6 +331,8 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
         const Material& material = mScene.materials[size_t(index)];
         const TextureRef& normalTexture = material.normalTexture.valid() ? material.normalTexture : material.clearcoatNormalTexture;
         if (normalTexture.valid()) generateTangents(primitive, normalTexture.texCoord);
+        else if (material.anisotropyStrength > 0.0f)
+            generateTangents(primitive, material.anisotropyTexture.valid() ? material.anisotropyTexture.texCoord : 0);
     }
     return primitive;
 }

@@ -118,6 +118,13 @@ struct Material {
     float sheenRoughnessFactor = 0.0f;
     TextureRef sheenColorTexture;     ///< sRGB
     TextureRef sheenRoughnessTexture; ///< A
+    /// KHR_materials_anisotropy: the specular lobe's alpha along a direction in the tangent
+    /// plane grows to mix(alpha, 1, strength^2) (0 = isotropic). The direction is the mesh's
+    /// tangent turned by anisotropyRotation (radians, counter-clockwise), or anisotropyTexture's
+    /// RG (x 2 - 1, linear) turned by it; the texture's B scales the strength.
+    float anisotropyStrength = 0.0f;
+    float anisotropyRotation = 0.0f;
+    TextureRef anisotropyTexture; ///< RG direction, B strength (linear)
     /// Shading model and BRDF terms (scene files); unset ones come from the frame.
     MaterialShading shading;
     /// Index of refraction of the dielectric part (KHR_materials_ior): F0 = ((ior − 1)/(ior + 1))²

@@ -77,7 +77,8 @@ const std::vector<std::string_view> kMaterialKeys = {"name", "baseColor", "metal
                                                      "shading", "brdfD", "brdfG", "brdfF", "brdfDiffuse", "ior",
                                                      "shininess", "sectorLight", "transmission", "thickness", "dispersion",
                                                      "attenuationDistance", "attenuationColor", "clearcoat",
-                                                     "clearcoatRoughness", "sheenColor", "sheenRoughness"};
+                                                     "clearcoatRoughness", "sheenColor", "sheenRoughness",
+                                                     "anisotropyStrength", "anisotropyRotation"};
 
 /// Sets the material's fields that `object` gives; the others keep their values (a shape's
 /// defaults, or a glTF model's material with its textures).
@@ -119,6 +120,9 @@ void applyMaterialKeys(const Object& object, Material& material)
         material.sheenColorFactor = *color;
     }
     material.sheenRoughnessFactor = object.unitInterval("sheenRoughness").value_or(material.sheenRoughnessFactor);
+    // KHR_materials_anisotropy's factors (a glTF model's anisotropy texture stays).
+    material.anisotropyStrength = object.unitInterval("anisotropyStrength").value_or(material.anisotropyStrength);
+    material.anisotropyRotation = object.number("anisotropyRotation").value_or(material.anisotropyRotation);
     // Material system (docs/scene-format.md): shading model, BRDF terms, F0 from an IOR, Phong exponent.
     if (const auto v = object.choice("shading", {"pbr", "unlit", "flat", "gouraud", "phong", "blinn-phong", "doom"}))
         material.shading.model = parseShadingModel(*v);

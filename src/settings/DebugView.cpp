@@ -9,7 +9,8 @@ std::optional<DebugView> parseDebugView(std::string_view name)
     if (name == "bloom") return DebugView::Bloom;
     for (DebugView view : {DebugView::BaseColor, DebugView::Normal, DebugView::Roughness, DebugView::Metallic, DebugView::Occlusion,
                            DebugView::Emissive, DebugView::BrdfD, DebugView::BrdfG, DebugView::BrdfF, DebugView::Cascades,
-                           DebugView::ShadowAtlas, DebugView::LightCount, DebugView::Sheen})
+                           DebugView::ShadowAtlas, DebugView::LightCount, DebugView::Sheen,
+                           DebugView::Anisotropy})
         if (name == debugViewName(view)) return view;
     return std::nullopt;
 }
@@ -33,6 +34,7 @@ const char* debugViewName(DebugView view)
     case DebugView::ShadowAtlas: return "shadow-atlas";
     case DebugView::LightCount: return "light-count";
     case DebugView::Sheen: return "sheen";
+    case DebugView::Anisotropy: return "anisotropy";
     }
     return "none";
 }

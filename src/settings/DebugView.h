@@ -32,6 +32,9 @@ enum class DebugView {
     /// KHR_materials_sheen: what the sheen lobe reflects of light from all around, sheen colour ×
     /// E(n·v, sheen roughness) (rgb; black without sheen), the share the base below gives up.
     Sheen,
+    /// KHR_materials_anisotropy: the direction in the tangent frame, rotated, as RG = xy × 0.5 +
+    /// 0.5 (the texture's own encoding), and the strength as B; (0.5, 0.5, 0) without anisotropy.
+    Anisotropy,
 };
 
 std::optional<DebugView> parseDebugView(std::string_view name);

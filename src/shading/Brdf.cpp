@@ -163,6 +163,21 @@ double diffuseLobe(Diffuse d, double r, double NoV, double NoL, double LoH, doub
     return 0.0;
 }
 
+double D_GGX_Anisotropic(double NoH, double ToH, double BoH, double at, double ab)
+{
+    const double a2 = at * ab;
+    const dvec3 f(ab * ToH, at * BoH, a2 * NoH);
+    const double w2 = a2 / glm::dot(f, f);
+    return a2 * w2 * w2 / kPi;
+}
+
+double V_SmithGGXCorrelatedAnisotropic(double NoV, double NoL, double ToV, double BoV, double ToL, double BoL, double at, double ab)
+{
+    const double lambdaV = NoL * glm::length(dvec3(at * ToV, ab * BoV, NoV));
+    const double lambdaL = NoV * glm::length(dvec3(at * ToL, ab * BoL, NoL));
+    return std::min(0.5 / std::max(lambdaV + lambdaL, 1e-7), 1.0); // the extension's clamp
+}
+
 dvec3 evaluate(const Surface& s, const dvec3& n, const dvec3& v, const dvec3& l)
 {
     dvec3 diffuse, specular;
@@ -191,6 +206,13 @@ void evaluateLobes(const Surface& s, const dvec3& n, const dvec3& v, const dvec3
     const double Fd = diffuseLobe(s.diffuse, r, NoV, NoL, VoH, glm::dot(v, l));
     diffuse = (dvec3(1.0) - F) * diffuseColor * Fd;
     specular = F * (D * V);
+    if (s.anisotropy > 0.0 && s.distribution == Distribution::GGX) {
+        const dvec3 t = glm::normalize(s.anisotropyDirection - n * glm::dot(n, s.anisotropyDirection));
+        const dvec3 b = glm::cross(n, t);
+        const double at = glm::mix(alpha, 1.0, s.anisotropy * s.anisotropy);
+        specular = F * (D_GGX_Anisotropic(NoH, glm::dot(t, h), glm::dot(b, h), at, alpha) *
+                        V_SmithGGXCorrelatedAnisotropic(NoV, NoL, glm::dot(t, v), glm::dot(b, v), glm::dot(t, l), glm::dot(b, l), at, alpha));
+    }
     if (glm::any(glm::greaterThan(s.sheenColor, dvec3(0.0)))) {
         // The base gives up what the sheen reflects; a clearcoat (below) then lies over both.
         const double rs = std::clamp(s.sheenRoughness, kMinPerceptualRoughness, 1.0);

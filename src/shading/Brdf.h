@@ -30,6 +30,11 @@ double V_Neumann(double NoV, double NoL);
 double V_Kelemen(double VoH);
 double V_CookTorrance(double NoV, double NoL, double NoH, double VoH);
 double V_Implicit();
+/// KHR_materials_anisotropy's terms (shaders/brdf/ggx.glsl, smith.glsl): t, b the lobe's
+/// directions, at and ab its alphas along them.
+double D_GGX_Anisotropic(double NoH, double ToH, double BoH, double at, double ab);
+double V_SmithGGXCorrelatedAnisotropic(double NoV, double NoL, double ToV, double BoV, double ToL, double BoL, double at,
+                                       double ab);
 dvec3 F_Schlick(const dvec3& f0, double VoH);
 dvec3 F_Schlick(const dvec3& f0, double f90, double VoH);
 dvec3 F_SchlickSG(const dvec3& f0, double f90, double VoH);
@@ -69,6 +74,11 @@ struct Surface {
     dvec3 sheenColor{0.0};
     double sheenRoughness = 0.0; ///< perceptual, clamped like perceptualRoughness
     double sheenAlbedo = 0.0;
+    /// KHR_materials_anisotropy (shaders/forward/anisotropy.glsl), GGX only: the specular lobe's
+    /// D and V become the anisotropic ones with alpha_t = mix(alpha, 1, anisotropy²) along
+    /// anisotropyDirection (made orthogonal to n) and alpha_b = alpha across it.
+    double anisotropy = 0.0;
+    dvec3 anisotropyDirection{1.0, 0.0, 0.0};
 };
 
 /// The "Charlie" sheen distribution and visibility (Estevez & Kulla 2017, as KHR_materials_sheen

@@ -54,6 +54,13 @@ BrdfCurves sampleBrdfCurves(const BrdfPlotMaterial& m, const ResolvedShading& sh
     surface.sheenColor = glm::clamp(m.sheenColor, 0.0, 1.0);
     surface.sheenRoughness = m.sheenRoughness;
     const double sheenRoughness = std::clamp(m.sheenRoughness, brdf::kMinPerceptualRoughness, 1.0);
+    // KHR_materials_anisotropy with its tangent along +x, the plot's plane; its V is the
+    // height-correlated one, as resolveShading gives the ANISOTROPY variant.
+    const bool anisotropic = m.anisotropy > 0.0 && render::anisotropic(shading);
+    surface.anisotropy = anisotropic ? std::clamp(m.anisotropy, 0.0, 1.0) : 0.0;
+    surface.anisotropyDirection = glm::dvec3(1.0, 0.0, 0.0);
+    if (anisotropic) surface.geometry = scene::BrdfGeometry::SmithGGXCorrelated;
+    const double alpha = r * r, alphaT = glm::mix(alpha, 1.0, surface.anisotropy * surface.anisotropy);
     // The same F0 and F90 as brdf::evaluate and makeSurfaceBrdf in shaders/brdf/brdf.glsl.
     const glm::dvec3 f0 = glm::mix(glm::min(0.04 * m.specularColor, glm::dvec3(1.0)) * m.specularFactor, m.baseColor, metallic);
     const double f90 = m.specularFactor + (1.0 - m.specularFactor) * metallic;
@@ -84,8 +91,18 @@ BrdfCurves sampleBrdfCurves(const BrdfPlotMaterial& m, const ResolvedShading& sh
         const double NoV = std::abs(glm::dot(n, view));
         const double NoH = std::clamp(glm::dot(n, h), 0.0, 1.0);
         const double VoH = std::clamp(glm::dot(view, h), 0.0, 1.0);
-        curves.d.push_back(float(brdf::distribution(shading.distribution, NoH, r * r)));
-        curves.v.push_back(float(brdf::visibility(shading.geometry, NoV, NoL, NoH, VoH, r)));
+        if (anisotropic) {
+            // Along the tangent (x: h.x = t.h), then the same angles across it (y: b.h).
+            curves.d.push_back(float(brdf::D_GGX_Anisotropic(NoH, h.x, h.y, alphaT, alpha)));
+            curves.v.push_back(float(brdf::V_SmithGGXCorrelatedAnisotropic(NoV, NoL, view.x, view.y, l.x, l.y, alphaT, alpha)));
+            const glm::dvec3 viewAcross(0.0, view.x, view.z), lAcross(0.0, l.x, l.z);
+            const glm::dvec3 hAcross = glm::normalize(viewAcross + lAcross);
+            curves.dAcross.push_back(float(brdf::D_GGX_Anisotropic(std::clamp(hAcross.z, 0.0, 1.0), hAcross.x, hAcross.y, alphaT, alpha)));
+            curves.wholeAcross.push_back(luminance(brdf::evaluate(surface, n, viewAcross, lAcross)) * float(NoL));
+        } else {
+            curves.d.push_back(float(brdf::distribution(shading.distribution, NoH, r * r)));
+            curves.v.push_back(float(brdf::visibility(surface.geometry, NoV, NoL, NoH, VoH, r)));
+        }
         curves.f.push_back(luminance(brdf::fresnel(shading.fresnel, f0, f90, VoH)));
         curves.whole.push_back(luminance(brdf::evaluate(surface, n, view, l)) * float(NoL));
         if (sheen && NoL > 0.0)

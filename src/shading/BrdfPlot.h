@@ -26,6 +26,8 @@ struct BrdfPlotMaterial {
     double clearcoatRoughness = 0.0;
     glm::dvec3 sheenColor{0.0};    ///< KHR_materials_sheen colour (black = no sheen)
     double sheenRoughness = 0.0;
+    /// KHR_materials_anisotropy strength (0 = isotropic); its direction is the plot's tangent.
+    double anisotropy = 0.0;
 };
 
 /// What the curves show for a shading model.
@@ -51,6 +53,10 @@ struct BrdfCurves {
     /// Microfacet with a sheen: the sheen lobe alone, sheenColor D_Charlie V_Charlie × n·l
     /// (luminance); empty without one. `whole` holds it over the scaled base.
     std::vector<float> sheen;
+    /// Microfacet with anisotropy: the plane of incidence above holds the tangent (the rougher
+    /// direction, the highlight's long axis); these are D and f × n·l in the plane across it,
+    /// which holds the bitangent. Empty for an isotropic material.
+    std::vector<float> dAcross, wholeAcross;
     double shininess = 0.0; ///< Classic: the exponent used
 };
 

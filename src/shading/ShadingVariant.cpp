@@ -1,5 +1,7 @@
 #include "shading/ShadingVariant.h"
 
+#include "shaders/shared/MaterialData.h"
+
 namespace specula::render {
 namespace {
 
@@ -46,6 +48,11 @@ scene::MaterialShading unpackShading(uint32_t features)
     return s;
 }
 
+bool anisotropic(const ResolvedShading& shading)
+{
+    return shading.model == scene::ShadingModel::Pbr && shading.distribution == scene::BrdfDistribution::GGX;
+}
+
 ResolvedShading resolveShading(const scene::MaterialShading& frame, scene::BrdfGeometry defaultGeometry, uint32_t features)
 {
     const scene::MaterialShading material = unpackShading(features);
@@ -55,6 +62,9 @@ ResolvedShading resolveShading(const scene::MaterialShading& frame, scene::BrdfG
     r.geometry = pick(frame.geometry, material.geometry, defaultGeometry);
     r.fresnel = pick(frame.fresnel, material.fresnel, r.fresnel);
     r.diffuse = pick(frame.diffuse, material.diffuse, r.diffuse);
+    // KHR_materials_anisotropy gives its GGX lobe the height-correlated Smith V (anisotropic;
+    // isotropic at strength 0): its variant's G is that, so its DFG table integrates the same V.
+    if ((features & SPECULA_MATERIAL_ANISOTROPY) && anisotropic(r)) r.geometry = scene::BrdfGeometry::SmithGGXCorrelated;
     return r;
 }
 

@@ -24,6 +24,10 @@ constexpr uint32_t kShadingFeatureMask = 0x7fff0000u;
 uint32_t packShading(const scene::MaterialShading& shading);
 scene::MaterialShading unpackShading(uint32_t features);
 
+/// Whether KHR_materials_anisotropy's lobe applies: the physically based model with GGX's D
+/// (the extension defines no other); elsewhere the material stays isotropic.
+bool anisotropic(const ResolvedShading& shading);
+
 /// The frame's override, else the material's choice, else the frame's default geometry and
 /// the glTF BRDF.
 ResolvedShading resolveShading(const scene::MaterialShading& frameOverride, scene::BrdfGeometry defaultGeometry,

@@ -22,12 +22,13 @@ constexpr int kShadowFilterShift = 35, kShadowTapsShift = 37;
 // Material features above the first nine bits, and the transparency choices.
 constexpr uint64_t kBlendTransparent = uint64_t(1) << 39, kTransmission = uint64_t(1) << 40, kOit = uint64_t(1) << 41;
 constexpr uint64_t kClearcoat = uint64_t(1) << 42;
+constexpr uint64_t kSheen = uint64_t(1) << 43, kAnisotropy = uint64_t(1) << 44; // 45: iridescence's
 constexpr uint64_t kDispersion = uint64_t(1) << 46;
-constexpr uint64_t kSheen = uint64_t(1) << 43;
-constexpr int kDebugShift = 16, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
+// Bits 16-19 are free (the debug view's field was there while it had 4 bits).
+constexpr int kDebugShift = 47, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
               kDiffuseShift = 30;
 constexpr uint64_t field(int shift, int bits) { return ((uint64_t(1) << bits) - 1) << shift; }
-constexpr uint64_t kDebugMask = field(kDebugShift, 4), kModelMask = field(kModelShift, 3),
+constexpr uint64_t kDebugMask = field(kDebugShift, 5), kModelMask = field(kModelShift, 3),
                    kDistributionMask = field(kDistributionShift, 2), kGeometryMask = field(kGeometryShift, 3),
                    kFresnelMask = field(kFresnelShift, 2), kDiffuseMask = field(kDiffuseShift, 2),
                    kShadowFilterMask = field(kShadowFilterShift, 2), kShadowTapsMask = field(kShadowTapsShift, 2);
@@ -70,6 +71,7 @@ constexpr std::array kTable = {
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::Cascades), "DEBUG_VIEW_CASCADES", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::LightCount), "DEBUG_VIEW_LIGHT_COUNT", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::Sheen), "DEBUG_VIEW_SHEEN", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::Anisotropy), "DEBUG_VIEW_ANISOTROPY", K::DebugView},
     VariantDefine{kIbl, kIbl, "IBL", K::FrameFeature},
     VariantDefine{kIblImportance, kIblImportance, "IBL_IMPORTANCE", K::FrameFeature},
     VariantDefine{kEnergyCompensation, kEnergyCompensation, "ENERGY_COMPENSATION", K::FrameFeature},
@@ -99,10 +101,12 @@ constexpr std::array kTable = {
     VariantDefine{kClearcoat, kClearcoat, "CLEARCOAT", K::MaterialFeature},
     VariantDefine{kDispersion, kDispersion, "DISPERSION", K::MaterialFeature},
     VariantDefine{kSheen, kSheen, "SHEEN", K::MaterialFeature},
+    VariantDefine{kAnisotropy, kAnisotropy, "ANISOTROPY", K::MaterialFeature},
     VariantDefine{kOit, kOit, "OIT", K::FrameFeature},
 };
 static_assert((kFeatureMask & (kIbl | kIblImportance | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
-static_assert(uint64_t(DebugView::LightCount) < (uint64_t(1) << 4)); // the debug field's 4 bits
+static_assert(uint64_t(DebugView::Anisotropy) < (uint64_t(1) << 5)); // the debug field's 5 bits
+static_assert((kDebugMask & (kBlendTransparent | kTransmission | kOit | kClearcoat | kSheen | kAnisotropy | kDispersion)) == 0);
 static_assert(((kShadowTapsMask | kShadowFilterMask) & (kBlendTransparent | kTransmission | kOit)) == 0);
 static_assert((kDiffuseMask & (kShadowDirectional | kShadowSpot | kShadowPoint | kShadowFilterMask | kShadowTapsMask)) == 0);
 
@@ -140,6 +144,9 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
         // KHR_materials_sheen: the lobe in the lit frame, and its own debug view.
         if ((features & SPECULA_MATERIAL_SHEEN) && !doomIndexed && (!isMaterialDebugView(debugView) || debugView == DebugView::Sheen))
             key |= kSheen;
+        // KHR_materials_anisotropy: the GGX lobe only (other D terms stay isotropic); the
+        // debug views keep it, for the anisotropy view and the anisotropic D.
+        if ((features & SPECULA_MATERIAL_ANISOTROPY) && anisotropic(shading) && !doomIndexed) key |= kAnisotropy;
     }
     // OIT's accumulation is for the blended list only (transmissive draws, blended or not, are
     // drawn sorted before it), and never in an indexed frame.

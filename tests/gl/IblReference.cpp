@@ -126,6 +126,11 @@ ReferenceSample referenceRadiance(const render::brdf::Surface& surface, const gl
     const double specularProbability = mirror ? 0.0 : hasDiffuse ? 0.5 : 1.0;
     const Frame frame(n);
     const double NoV = glm::dot(n, v);
+    // KHR_materials_anisotropy: sample the anisotropic lobe itself (brdf::Surface::anisotropy).
+    const bool anisotropic = !mirror && surface.anisotropy > 0.0 && surface.distribution == brdf::Distribution::GGX;
+    const dvec3 lobeT = glm::normalize(surface.anisotropyDirection - n * glm::dot(n, surface.anisotropyDirection));
+    const dvec3 lobeB = glm::cross(n, lobeT);
+    const double alphaT = glm::mix(alpha, 1.0, surface.anisotropy * surface.anisotropy);
 
     // f(l) (n·l) without the mirror's delta.
     auto integrand = [&](const dvec3& l) -> dvec3 {
@@ -143,7 +148,9 @@ ReferenceSample referenceRadiance(const render::brdf::Surface& surface, const gl
         if (specularProbability > 0.0) {
             const dvec3 h = glm::normalize(v + l);
             const double NoH = glm::dot(n, h), VoH = glm::dot(v, h);
-            if (NoH > 0.0 && VoH > 0.0) p += specularProbability * brdf::D_GGX(NoH, alpha) * NoH / (4.0 * VoH);
+            const double D = anisotropic ? brdf::D_GGX_Anisotropic(NoH, glm::dot(lobeT, h), glm::dot(lobeB, h), alphaT, alpha)
+                                         : brdf::D_GGX(NoH, alpha);
+            if (NoH > 0.0 && VoH > 0.0) p += specularProbability * D * NoH / (4.0 * VoH);
         }
         return p;
     };
@@ -159,7 +166,13 @@ ReferenceSample referenceRadiance(const render::brdf::Surface& surface, const gl
             {
                 const double u0 = random.next(), u1 = random.next(), u2 = random.next();
                 dvec3 l;
-                if (u0 < specularProbability) {
+                if (u0 < specularProbability && anisotropic) {
+                    // Slopes of the unit lobe stretched by (at, ab): h distributed as D(h) n.h.
+                    const double phi = 2.0 * kPi * u2, tanT = std::sqrt(u1 / std::max(1.0 - u1, 1e-300));
+                    const dvec3 hl = glm::normalize(dvec3(alphaT * tanT * std::cos(phi), alpha * tanT * std::sin(phi), 1.0));
+                    const dvec3 h = lobeT * hl.x + lobeB * hl.y + n * hl.z;
+                    l = 2.0 * glm::dot(v, h) * h - v;
+                } else if (u0 < specularProbability) {
                     const double phi = 2.0 * kPi * u2;
                     const double cosT = std::sqrt((1.0 - u1) / (1.0 + (alpha * alpha - 1.0) * u1));
                     const double sinT = std::sqrt(std::max(1.0 - cosT * cosT, 0.0));

@@ -64,6 +64,10 @@ TEST_F(GlTest, SharedStructsMatchGlslLayout)
     const gl::Program sheened({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = {"SHEEN"}});
     EXPECT_EQ(blockSize(sheened.id(), GL_UNIFORM_BLOCK, "MaterialBlock"), GLint(sizeof(GpuMaterial)));
     EXPECT_EQ(memberOffset(sheened.id(), GL_UNIFORM, "material.sheen"), GLint(offsetof(GpuMaterial, sheen)));
+    // The anisotropy variant reads its vec4 after clearcoat's and transform 10 of 13.
+    const gl::Program brushed({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = {"ANISOTROPY"}});
+    EXPECT_EQ(blockSize(brushed.id(), GL_UNIFORM_BLOCK, "MaterialBlock"), GLint(sizeof(GpuMaterial)));
+    EXPECT_EQ(memberOffset(brushed.id(), GL_UNIFORM, "material.anisotropy"), GLint(offsetof(GpuMaterial, anisotropy)));
 }
 
 TEST_F(GlTest, PostStructsMatchGlslLayout)

@@ -194,3 +194,34 @@ TEST(BrdfPlot, ClassicModelsPlotTheirLobe)
     EXPECT_EQ(render::sampleBrdfCurves(m, ResolvedShading{.model = scene::ShadingModel::Unlit}, kView).kind, BrdfPlotKind::None);
     EXPECT_TRUE(render::sampleBrdfCurves(m, ResolvedShading{.model = scene::ShadingModel::Doom}, kView).whole.empty());
 }
+
+TEST(BrdfPlot, AnisotropyPlotsAlongAndAcrossTheTangent)
+{
+    // KHR_materials_anisotropy: along the tangent (the plot's plane) the lobe has alpha_t =
+    // mix(alpha, 1, s^2), across it alpha_b = alpha: D at the mirror direction (h = n in both
+    // planes) is the same, 1 / (pi alpha_t alpha_b), and off it the lobe along the tangent is
+    // wider: its D falls less steeply. Isotropic materials have no "across" curves.
+    render::BrdfPlotMaterial m = plastic();
+    EXPECT_TRUE(render::sampleBrdfCurves(m, ResolvedShading{}, kView, kSamples).dAcross.empty());
+    m.anisotropy = 0.8;
+    const BrdfCurves c = render::sampleBrdfCurves(m, ResolvedShading{}, kView, kSamples);
+    ASSERT_EQ(c.dAcross.size(), c.d.size());
+    ASSERT_EQ(c.wholeAcross.size(), c.d.size());
+    const double alpha = 0.4 * 0.4, at = alpha + (1.0 - alpha) * 0.64;
+    const size_t mirror = size_t(kView + 89.0); // light at +30 degrees: h = n
+    EXPECT_NEAR(c.d[mirror], 1.0 / (render::brdf::kPi * at * alpha), 1e-4 * c.d[mirror]);
+    EXPECT_NEAR(c.dAcross[mirror], c.d[mirror], 1e-4 * c.d[mirror]);
+    const size_t off = mirror + 20; // 20 degrees past the mirror direction
+    EXPECT_GT(c.d[off] / c.d[mirror], 2.0 * c.dAcross[off] / c.dAcross[mirror]);
+    // The whole BRDF along the tangent is brdf::evaluate with the direction +x.
+    render::brdf::Surface s;
+    s.baseColor = m.baseColor;
+    s.metallic = m.metallic;
+    s.perceptualRoughness = m.perceptualRoughness;
+    s.geometry = render::brdf::Geometry::SmithGGXCorrelated;
+    s.anisotropy = 0.8;
+    for (size_t k = 0; k < c.lightDegrees.size(); ++k) {
+        const Angles a = anglesAt(c, k);
+        EXPECT_NEAR(c.whole[k], luminance(render::brdf::evaluate(s, a.n, a.v, a.l)) * a.NoL, 1e-6) << k;
+    }
+}

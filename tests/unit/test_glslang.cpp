@@ -62,6 +62,11 @@ std::vector<Variant> variants()
     out.push_back({"transparency/opaque_copy.frag", {"ENVIRONMENT_BEHIND"}});
     out.push_back({"transparency/oit_composite.frag", {"MULTISAMPLE"}});
     out.push_back({"forward/pbr.frag", {"TRANSMISSION", "ALPHA_BLEND", "BLEND_TRANSPARENT", "OIT", "IBL", "ENERGY_COMPENSATION"}});
+    // KHR_materials_anisotropy with the importance-sampled lobe, a normal map and back faces, and
+    // its D and G debug views.
+    out.push_back({"forward/pbr.frag", {"ANISOTROPY", "IBL", "IBL_IMPORTANCE", "ENERGY_COMPENSATION", "HAS_NORMAL_TEXTURE", "DOUBLE_SIDED"}});
+    out.push_back({"forward/pbr.frag", {"ANISOTROPY", "DEBUG_VIEW_BRDF_D", "DOUBLE_SIDED"}});
+    out.push_back({"forward/pbr.frag", {"ANISOTROPY", "DEBUG_VIEW_BRDF_G"}});
     // The DFG bake (render/ImageBasedLighting): each D, G and F define it is made with, alone
     // (the groups are independent dispatches) and one from every group together.
     for (const char* define : {"BRDF_D_BECKMANN", "BRDF_D_BLINN_PHONG", "BRDF_G_SCHLICK_GGX", "BRDF_G_SMITH_GGX_CORRELATED",

@@ -1695,3 +1695,59 @@ TEST(GltfExtensions, SheenDefaultsAndClamps)
     EXPECT_EQ(scene.materials.at(1).sheenColorFactor, glm::vec3(1.0f, 0.25f, 0.0f));
     EXPECT_EQ(scene.materials.at(1).sheenRoughnessFactor, 1.0f);
 }
+
+// tests/assets/gltf/anisotropy_plate.gltf (make_anisotropy.py; the Khronos validator: 0 errors,
+// 0 warnings): KHR_materials_anisotropy's strength, rotation and texture, no warning.
+TEST(GltfExtensions, AnisotropyFieldsAndTexture)
+{
+    const Scene scene = loadGltf(kTestAssets / "anisotropy_plate.gltf");
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    ASSERT_EQ(scene.materials.size(), 1u);
+    const Material& m = scene.materials[0];
+    EXPECT_FLOAT_EQ(m.anisotropyStrength, 0.9f);
+    EXPECT_FLOAT_EQ(m.anisotropyRotation, 0.25f);
+    ASSERT_TRUE(m.anisotropyTexture.valid());
+    EXPECT_EQ(m.anisotropyTexture.image, 0);
+    EXPECT_EQ(m.anisotropyTexture.texCoord, 0);
+    EXPECT_EQ(scene.images.at(0).width, 8);
+    EXPECT_TRUE(scene.meshes.at(0).primitives.at(0).hasTangents);
+}
+
+TEST(GltfExtensions, AnisotropyDefaultsTexCoordTransformAndTangents)
+{
+    // Defaults (strength 0, rotation 0), a texture's texCoord and KHR_texture_transform inside
+    // the extension, a rotation beyond 2 pi folded into (-pi, pi]; without TANGENT or a normal
+    // map, an anisotropic material still gets tangents (from its texture's uv set).
+    TempDir dir;
+    GltfBuilder b;
+    auto& p = b.primitive({{"POSITION", b.vec3(kTriangle)}, {"NORMAL", b.vec3({0, 0, 1, 0, 0, 1, 0, 0, 1})},
+                           {"TEXCOORD_0", b.vec2({0, 0, 1, 0, 0, 1})}, {"TEXCOORD_1", b.vec2({0, 0, 0, 1, 1, 0})}});
+    p["material"] = 1;
+    b.doc["images"] = {{{"uri", "brush.png"}}};
+    b.doc["textures"] = {{{"source", 0}}};
+    b.doc["materials"] = {
+        {{"extensions", {{"KHR_materials_anisotropy", json::object()}}}},
+        {{"extensions",
+          {{"KHR_materials_anisotropy",
+            {{"anisotropyStrength", 0.6},
+             {"anisotropyRotation", 7.0},
+             {"anisotropyTexture",
+              {{"index", 0}, {"texCoord", 1}, {"extensions", {{"KHR_texture_transform", {{"offset", {0.25, 0.5}}, {"scale", {2, 2}}}}}}}}}}}}}};
+    b.doc["extensionsUsed"] = json::array({"KHR_materials_anisotropy", "KHR_texture_transform"});
+    b.doc["extensionsRequired"] = json::array({"KHR_materials_anisotropy"});
+    const std::vector<uint8_t> png = makePng(1, 1, {255, 128, 255}, false);
+    dir.write("brush.png", std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+    const Scene scene = loadGltf(b.write(dir, "brush.gltf"));
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    const Material& plain = scene.materials.at(0);
+    EXPECT_EQ(plain.anisotropyStrength, 0.0f);
+    EXPECT_EQ(plain.anisotropyRotation, 0.0f);
+    EXPECT_FALSE(plain.anisotropyTexture.valid());
+    const Material& brushed = scene.materials.at(1);
+    EXPECT_FLOAT_EQ(brushed.anisotropyStrength, 0.6f);
+    EXPECT_NEAR(brushed.anisotropyRotation, 7.0 - 2.0 * 3.14159265358979323846, 1e-6);
+    EXPECT_EQ(brushed.anisotropyTexture.texCoord, 1);
+    EXPECT_EQ(brushed.anisotropyTexture.transform.offset, glm::vec2(0.25f, 0.5f));
+    EXPECT_EQ(brushed.anisotropyTexture.transform.scale, glm::vec2(2.0f));
+    EXPECT_TRUE(scene.meshes.at(0).primitives.at(0).hasTangents);
+}

@@ -170,6 +170,23 @@ TEST(SceneFileMaterials, Sheen)
     EXPECT_NE(error(R"({"sheenRoughness": -0.1})").find("sheenRoughness"), std::string::npos);
 }
 
+// KHR_materials_anisotropy's factors in a scene file (docs/scene-format.md) and their errors.
+TEST(SceneFileMaterials, Anisotropy)
+{
+    const SceneDocument d = test::loadSceneText(R"({"shapes": [
+        {"type": "sphere", "material": {"anisotropyStrength": 0.8, "anisotropyRotation": -0.5}},
+        {"type": "sphere", "material": {}}]})");
+    ASSERT_EQ(d.scene.materials.size(), 2u);
+    EXPECT_FLOAT_EQ(d.scene.materials[0].anisotropyStrength, 0.8f);
+    EXPECT_FLOAT_EQ(d.scene.materials[0].anisotropyRotation, -0.5f);
+    EXPECT_EQ(d.scene.materials[1].anisotropyStrength, 0.0f); // isotropic by default
+    auto error = [](const std::string& material) {
+        return test::sceneError(R"({"shapes": [{"type": "sphere", "material": )" + material + "}]}");
+    };
+    EXPECT_NE(error(R"({"anisotropyStrength": 1.5})").find("anisotropyStrength"), std::string::npos);
+    EXPECT_NE(error(R"({"anisotropyRotation": "north"})").find("anisotropyRotation"), std::string::npos);
+}
+
 // The transmission golden's scene file (tests/assets/transparency/transmission.json) loads.
 TEST(SceneFileMaterials, TransmissionSceneLoads)
 {

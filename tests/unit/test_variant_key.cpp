@@ -1,6 +1,7 @@
 // The forward pass's variant key (shading/VariantKey): one table of bits and defines.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -86,4 +87,32 @@ TEST(VariantKey, TableRowsAreDistinct)
         EXPECT_NE(row.value, 0u) << row.define << ": a default has no define";
         EXPECT_EQ(row.value & ~row.mask, 0u) << row.define;
     }
+}
+
+// KHR_materials_anisotropy: its variant only for a material that has it, with GGX's D (the
+// extension defines no other), and its lobe's height-correlated V from resolveShading (so the
+// DFG table integrates the same V); a material without it keeps its G and pays nothing.
+TEST(VariantKey, AnisotropyOnlyForAnisotropicGgxMaterials)
+{
+    const uint32_t features = SPECULA_MATERIAL_ANISOTROPY;
+    const ResolvedShading brushed = resolveShading({}, scene::BrdfGeometry::SmithGGX, features);
+    EXPECT_EQ(brushed.geometry, scene::BrdfGeometry::SmithGGXCorrelated);
+    const auto defines = ForwardVariant::make(features, brushed, DebugView::None, IblVariant::SplitSum, true, false, false).defines();
+    EXPECT_EQ(defines, (std::vector<std::string>{"BRDF_G_SMITH_GGX_CORRELATED", "IBL", "ENERGY_COMPENSATION", "ANISOTROPY"}));
+    const ResolvedShading plain = resolveShading({}, scene::BrdfGeometry::SmithGGX, 0u);
+    EXPECT_EQ(plain.geometry, scene::BrdfGeometry::SmithGGX);
+    EXPECT_TRUE(ForwardVariant::make(0u, plain, DebugView::None, IblVariant::None, false, false, false).defines().empty());
+    // Beckmann's D stays isotropic, and keeps its G; so does a classic model; a Doom frame has none.
+    scene::MaterialShading beckmann;
+    beckmann.distribution = scene::BrdfDistribution::Beckmann;
+    const ResolvedShading b = resolveShading(beckmann, scene::BrdfGeometry::SmithGGX, features);
+    EXPECT_EQ(b.geometry, scene::BrdfGeometry::SmithGGX);
+    EXPECT_EQ(ForwardVariant::make(features, b, DebugView::None, IblVariant::None, false, false, false).defines(),
+              (std::vector<std::string>{"BRDF_D_BECKMANN"}));
+    const auto doom = ForwardVariant::make(features, brushed, DebugView::None, IblVariant::None, false, false, true).defines();
+    EXPECT_EQ(std::find(doom.begin(), doom.end(), "ANISOTROPY"), doom.end());
+    // The anisotropy debug view keeps the variant (it shows the direction and strength).
+    const auto debug = ForwardVariant::make(features, brushed, DebugView::Anisotropy, IblVariant::None, false, false, false).defines();
+    EXPECT_NE(std::find(debug.begin(), debug.end(), "ANISOTROPY"), debug.end());
+    EXPECT_NE(std::find(debug.begin(), debug.end(), "DEBUG_VIEW_ANISOTROPY"), debug.end());
 }
