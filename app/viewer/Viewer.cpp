@@ -367,6 +367,12 @@ void Viewer::setMaterialParameter(int index, render::MaterialParameter parameter
     case render::MaterialParameter::SectorLight: m.sectorLight = int(std::lround(std::clamp(value.x, 0.0f, 255.0f))); break;
     case render::MaterialParameter::ClearcoatFactor: m.clearcoatFactor = std::clamp(value.x, 0.0f, 1.0f); break;
     case render::MaterialParameter::ClearcoatRoughness: m.clearcoatRoughnessFactor = std::clamp(value.x, 0.0f, 1.0f); break;
+    case render::MaterialParameter::IridescenceFactor: m.iridescenceFactor = std::clamp(value.x, 0.0f, 1.0f); break;
+    case render::MaterialParameter::IridescenceIor: m.iridescenceIor = std::max(value.x, 1.0f); break;
+    case render::MaterialParameter::IridescenceThickness:
+        m.iridescenceThicknessMinimum = std::max(value.x, 0.0f);
+        m.iridescenceThicknessMaximum = std::max(value.y, 0.0f);
+        break;
     case render::MaterialParameter::PhongSpecular: // the classic ks: only in the record
     case render::MaterialParameter::SpecularColor: break; // colour × ior: setMaterialIor
     }

@@ -4,7 +4,7 @@
 // Material features are compile-time variants (see Renderer's variant key): HAS_*_TEXTURE,
 // VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND (premultiplied output; BLEND_TRANSPARENT: specular and
 // emission unscaled by alpha), TRANSMISSION (forward/transmission.glsl), CLEARCOAT
-// (forward/clearcoat.glsl), DOUBLE_SIDED; OIT
+// (forward/clearcoat.glsl), IRIDESCENCE (forward/iridescence.glsl), DOUBLE_SIDED; OIT
 // (weighted blended transparency's two targets); per frame, SSAO, and DOOM_INDEXED (a
 // Doom frame: with SHADING_DOOM, the output is a palette index and a colour-map level, not a
 // colour; render/DoomPass). A material without a feature pays nothing for it; without
@@ -14,6 +14,9 @@
 #include "../common/frame_block.glsl"
 #include "../shared/MaterialData.h"
 #include "../brdf/brdf.glsl"
+// Before ibl/importance.glsl, which includes it in a branch: a file is included once, and the
+// IRIDESCENCE variant needs it without IBL too (pure functions: unused, they cost nothing).
+#include "../brdf/thin_film.glsl"
 #include "../lights/light_list.glsl"
 #include "../lights/punctual.glsl"
 #if defined(IBL)
@@ -70,6 +73,9 @@ const float kHalfMax = 65504.0;
 #include "texture_uv.glsl"
 #if defined(CLEARCOAT)
 #include "clearcoat.glsl"
+#endif
+#if defined(IRIDESCENCE)
+#include "iridescence.glsl"
 #endif
 #include "shading_models.glsl"
 #include "debug_views.glsl"
@@ -196,6 +202,9 @@ void main()
     ClearcoatLayer coat = makeClearcoat(geometricNormal, flip, v);
     vec3 coatLight = vec3(0.0); // the layer's own reflection, added over the dimmed base
 #endif
+#if defined(IRIDESCENCE)
+    ThinFilm film = makeIridescence(baseColor.rgb, metallic);
+#endif
 
 #if defined(IBL) || defined(ENERGY_COMPENSATION)
     // Split-sum DFG terms of this draw's own D, G and F (the renderer binds the table baked for
@@ -238,7 +247,11 @@ void main()
         illuminance *= shadowVisibility(light, vWorldPosition, n, l);
 #endif
         vec3 diffuse, specular;
+#if defined(IRIDESCENCE)
+        evaluateIridescentLobes(surface, film, n, v, l, diffuse, specular);
+#else
         evaluateBrdfLobes(surface, n, v, l, diffuse, specular);
+#endif
         diffuseLight += diffuse * illuminance * NoL;
         specularLight += specular * energyCompensation * illuminance * NoL;
     }
@@ -250,13 +263,26 @@ void main()
     vec3 r = reflect(-v, n);
     // With KHR_materials_specular's F90 < 1 the split sum's grazing term scales with it.
     vec3 specularAlbedo = (surface.f0 * dfg.x + surface.f90 * dfg.y) * energyCompensation;
+#if defined(IRIDESCENCE)
+    // The film's Fresnel at n.v in place of the table's: E = F_iridescence(n.v) (A + B), and
+    // the diffuse lobe below it weighted by 1 - max(E) (forward/iridescence.glsl).
+    vec3 filmAlbedo = thinFilmFresnel(film, NoV) * (dfg.x + dfg.y) * energyCompensation;
+    vec3 diffuseWeightIbl = iridescentDiffuseWeight(specularAlbedo, filmAlbedo, film.factor);
+    specularAlbedo = mix(specularAlbedo, filmAlbedo, film.factor);
+#else
+    vec3 diffuseWeightIbl = 1.0 - specularAlbedo;
+#endif
     // What the specular lobe reflects, the diffuse lobe below it cannot: 1 - E keeps a white
     // dielectric in a white furnace at or below the environment's radiance.
-    vec3 diffuseIbl = irradianceCube(toEnvironment(n)) * surface.diffuseColor * INV_PI * (1.0 - specularAlbedo);
+    vec3 diffuseIbl = irradianceCube(toEnvironment(n)) * surface.diffuseColor * INV_PI * diffuseWeightIbl;
 #if defined(IBL_IMPORTANCE)
     // The lobe integrated per pixel with this material's BRDF (ibl/importance.glsl); the
     // diffuse lobe keeps the split sum's 1 - E, E the DFG table's.
+#if defined(IRIDESCENCE)
+    vec3 specularIbl = importanceSampledSpecular(surface, n, v, iblRoughness, film) * energyCompensation;
+#else
     vec3 specularIbl = importanceSampledSpecular(surface, n, v, iblRoughness) * energyCompensation;
+#endif
 #else
     vec3 specularIbl = prefilteredRadiance(specularDominantDirection(n, r, iblRoughness), iblRoughness) * specularAlbedo;
 #endif
@@ -290,7 +316,11 @@ void main()
     // the viewing angle, 1 − F(n·v) (Schlick with F0 from the ior; exact at normal incidence).
     float transmission = material.transmission.x * (1.0 - metallic);
     vec3 behind = transmittedRadiance(n, v, vWorldPosition, material.transmission.y, material.transmission.z, iblRoughness);
+#if defined(IRIDESCENCE)
+    vec3 transmitted = transmission * iridescentDiffuseWeight(brdfF(surface, NoV), thinFilmFresnel(film, NoV), film.factor) * baseColor.rgb * behind;
+#else
     vec3 transmitted = transmission * (1.0 - brdfF(surface, NoV)) * baseColor.rgb * behind;
+#endif
     diffuseLight = diffuseLight * (1.0 - transmission) + transmitted;
 #endif
 

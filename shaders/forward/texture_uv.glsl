@@ -9,6 +9,8 @@ const uint TEX_EMISSIVE = 4u;
 const uint TEX_CLEARCOAT = 5u;
 const uint TEX_CLEARCOAT_ROUGHNESS = 6u;
 const uint TEX_CLEARCOAT_NORMAL = 7u;
+const uint TEX_IRIDESCENCE = 11u; // 8-10: sheen and anisotropy (issue 18)
+const uint TEX_IRIDESCENCE_THICKNESS = 12u;
 
 // Texture coordinates of one texture: its uv set and KHR_texture_transform.
 vec2 textureUv(uint texture)

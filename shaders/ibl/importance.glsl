@@ -7,6 +7,7 @@
 // share of the lobe, Ω_s = 1 / (N pdf), against a base texel's Ω_p = 4π / (6 w²): the filter
 // then integrates what the N samples leave between them and no sample pattern shows.
 #include "sampling.glsl"
+#include "../brdf/thin_film.glsl"
 
 layout(binding = SPECULA_UNIT_ENVIRONMENT_CUBE) uniform samplerCube uEnvironmentCube;
 
@@ -23,14 +24,20 @@ const float kIblLodBias = 0.0;
 // Radiance reflected by the specular lobe towards v (world space), not yet scaled by the
 // environment's intensity. `perceptualRoughness` is the unclamped image-based one: 0 is the
 // mirror, one fetch of level 0.
-vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float perceptualRoughness)
+// With IRIDESCENCE, `film` replaces each sample's Fresnel by mix(F, the film's F(v.h), factor)
+// (KHR_materials_iridescence; noThinFilm() for none).
+vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float perceptualRoughness, ThinFilm film)
 {
     float NoV = max(dot(n, v), 1e-4);
     float alpha = perceptualRoughness * perceptualRoughness;
     // Below roughness 0.01 the lobe is narrower than a base texel of a 1024² face: the mirror.
     if (alpha < 1e-4) {
         vec3 r = reflect(-v, n);
-        return brdfF(surface, NoV) * textureLod(uEnvironmentCube, toEnvironment(r), 0.0).rgb;
+        vec3 F = brdfF(surface, NoV);
+#if defined(IRIDESCENCE)
+        if (film.factor > 0.0) F = mix(F, thinFilmFresnel(film, NoV), film.factor);
+#endif
+        return F * textureLod(uEnvironmentCube, toEnvironment(r), 0.0).rgb;
     }
     SurfaceBrdf s = surface;
     s.perceptualRoughness = perceptualRoughness;
@@ -58,7 +65,16 @@ vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float percep
         const float dRatio = 1.0;
 #endif
         float weight = dRatio * brdfV(s, NoV, NoL, NoH, VoH) * NoL * 4.0 * VoH / max(NoH, 1e-6);
-        sum += brdfF(s, VoH) * weight * radiance;
+        vec3 F = brdfF(s, VoH);
+#if defined(IRIDESCENCE)
+        if (film.factor > 0.0) F = mix(F, thinFilmFresnel(film, VoH), film.factor);
+#endif
+        sum += F * weight * radiance;
     }
     return sum / float(IBL_IMPORTANCE_SAMPLES);
+}
+
+vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float perceptualRoughness)
+{
+    return importanceSampledSpecular(surface, n, v, perceptualRoughness, noThinFilm());
 }

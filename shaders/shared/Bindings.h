@@ -42,6 +42,8 @@
 #define SPECULA_UNIT_CLEARCOAT 19           // KHR_materials_clearcoat's three textures (forward pass)
 #define SPECULA_UNIT_CLEARCOAT_ROUGHNESS 20
 #define SPECULA_UNIT_CLEARCOAT_NORMAL 21
+#define SPECULA_UNIT_IRIDESCENCE 25           // KHR_materials_iridescence's two textures (forward pass)
+#define SPECULA_UNIT_IRIDESCENCE_THICKNESS 26
 #define SPECULA_UNIT_SSAO 12             // forward pass: the blurred ambient occlusion
 #define SPECULA_BINDING_SSAO 5           // uniform buffer: SsaoData
 #define SPECULA_BINDING_EXPOSURE_PARAMS 6 // uniform buffer: ExposureParams

@@ -22,6 +22,7 @@ SPECULA_SHARED_BEGIN
 #define SPECULA_MATERIAL_TRANSMISSION 1024u     // KHR_materials_transmission factor above 0
 #define SPECULA_MATERIAL_CLEARCOAT 2048u        // KHR_materials_clearcoat factor above 0
 #define SPECULA_MATERIAL_HAS_CLEARCOAT_NORMAL_TEXTURE 4096u // read at run time by the CLEARCOAT variant
+#define SPECULA_MATERIAL_IRIDESCENCE 32768u     // KHR_materials_iridescence factor above 0
 
 struct GpuMaterial {
     vec4 baseColorFactor;
@@ -30,8 +31,9 @@ struct GpuMaterial {
     vec4 alpha;           // x alpha cutoff
     uvec4 flags;          // x SPECULA_MATERIAL_* bits; y texCoord sets, 2 bits per texture
                           // (base colour, metallic-roughness, normal, occlusion, emissive,
-                          // clearcoat, clearcoat roughness, clearcoat normal)
-    vec4 uvTransform[16]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
+                          // clearcoat, clearcoat roughness, clearcoat normal, sheen colour,
+                          // sheen roughness, anisotropy, iridescence, iridescence thickness)
+    vec4 uvTransform[26]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
     vec4 specular;        // KHR_materials_specular: rgb specularColorFactor, a specularFactor; rgb also
                           // carries KHR_materials_ior: x (F0(ior) / 0.04), so 0.04 x rgb is the dielectric F0
     vec4 phong;           // Phong, Blinn-Phong, Gouraud, flat: rgb dielectric specular colour ks,
@@ -42,10 +44,12 @@ struct GpuMaterial {
     vec4 attenuation;     // rgb KHR_materials_volume attenuation colour
     vec4 clearcoat;       // KHR_materials_clearcoat: x clearcoatFactor, y clearcoatRoughnessFactor
                           // (perceptual), z clearcoat normal texture scale
+    vec4 iridescence;     // KHR_materials_iridescence: x iridescenceFactor, y iridescenceIor,
+                          // z iridescenceThicknessMinimum, w iridescenceThicknessMaximum (nm)
 };
 
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::GpuMaterial) == 26 * 16);
+static_assert(sizeof(specula::shared::GpuMaterial) == 37 * 16);
 #endif

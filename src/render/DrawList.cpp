@@ -92,9 +92,11 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
         }
         state.apply(pipeline);
         if (options.textures == MaterialTextures::All) {
-            // The clearcoat slots only for the variant that samples them.
-            const size_t slots = m.clearcoat ? size_t(TextureSlot::Count) : size_t(TextureSlot::Clearcoat);
-            for (size_t slot = 0; slot < slots; ++slot) {
+            // An extension's slots only for the variant that samples them.
+            for (size_t slot = 0; slot < size_t(TextureSlot::Count); ++slot) {
+                if (slot >= size_t(TextureSlot::Clearcoat) && slot <= size_t(TextureSlot::ClearcoatNormal) && !m.clearcoat) continue;
+                if (slot >= size_t(TextureSlot::SheenColor) && slot <= size_t(TextureSlot::Anisotropy)) continue;
+                if (slot >= size_t(TextureSlot::Iridescence) && slot <= size_t(TextureSlot::IridescenceThickness) && !m.iridescence) continue;
                 const gl::Texture* texture = m.textures[slot];
                 const bool normal = slot == size_t(TextureSlot::Normal) || slot == size_t(TextureSlot::ClearcoatNormal);
                 if (!texture) texture = normal ? options.flatNormal : options.white;

@@ -101,6 +101,8 @@ int textureUnit(TextureSlot slot)
     case TextureSlot::Clearcoat: return SPECULA_UNIT_CLEARCOAT;
     case TextureSlot::ClearcoatRoughness: return SPECULA_UNIT_CLEARCOAT_ROUGHNESS;
     case TextureSlot::ClearcoatNormal: return SPECULA_UNIT_CLEARCOAT_NORMAL;
+    case TextureSlot::Iridescence: return SPECULA_UNIT_IRIDESCENCE;
+    case TextureSlot::IridescenceThickness: return SPECULA_UNIT_IRIDESCENCE_THICKNESS;
     default: return int(slot);
     }
 }
@@ -208,6 +210,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         gpu.transmission = glm::vec4(m.transmissionFactor, m.ior.value_or(1.5f), m.thickness, m.attenuationDistance);
         gpu.attenuation = glm::vec4(m.attenuationColor, 0.0f);
         gpu.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughnessFactor, m.clearcoatNormalScale, 0.0f);
+        gpu.iridescence = glm::vec4(m.iridescenceFactor, m.iridescenceIor, m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum);
         // Classic models' specular colour: mid grey, a plastic highlight (Phong 1975's ks).
         gpu.phong = glm::vec4(glm::vec3(0.5f), m.shininess);
         for (int slot = 0; slot < int(TextureSlot::Count); ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
@@ -232,6 +235,10 @@ GpuScene::GpuScene(const scene::Scene& scene)
             {m.clearcoatTexture, TextureSlot::Clearcoat, false, 0u},
             {m.clearcoatRoughnessTexture, TextureSlot::ClearcoatRoughness, false, 0u},
             {m.clearcoatNormalTexture, TextureSlot::ClearcoatNormal, false, SPECULA_MATERIAL_HAS_CLEARCOAT_NORMAL_TEXTURE},
+            // Read only by the IRIDESCENCE variant, which samples both always (white without one:
+            // factor x 1, and the maximum thickness, as the extension says).
+            {m.iridescenceTexture, TextureSlot::Iridescence, false, 0u},
+            {m.iridescenceThicknessTexture, TextureSlot::IridescenceThickness, false, 0u},
         };
         for (const auto& s : slots) {
             if (!s.ref.valid()) continue;
@@ -251,6 +258,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
         // A zero factor is no layer at all (the texture only scales the factor): no variant for it.
         binding.clearcoat = m.clearcoatFactor > 0.0f;
         if (binding.clearcoat) gpu.flags.x |= SPECULA_MATERIAL_CLEARCOAT;
+        binding.iridescence = m.iridescenceFactor > 0.0f;
+        if (binding.iridescence) gpu.flags.x |= SPECULA_MATERIAL_IRIDESCENCE;
         // The shading model and BRDF terms select the variant too (not read by the shaders).
         binding.features = gpu.flags.x | packShading(m.shading);
         gpuMaterials.push_back(gpu);
@@ -453,6 +462,19 @@ void GpuScene::setClearcoat(int material, bool on)
         binding.clearcoat = on;
         binding.features = on ? binding.features | SPECULA_MATERIAL_CLEARCOAT : binding.features & ~uint32_t(SPECULA_MATERIAL_CLEARCOAT);
         mRecords[record].flags.x = (mRecords[record].flags.x & ~uint32_t(SPECULA_MATERIAL_CLEARCOAT)) | (binding.features & SPECULA_MATERIAL_CLEARCOAT);
+        mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
+                               &mRecords[record].flags.x);
+    }
+}
+
+void GpuScene::setIridescence(int material, bool on)
+{
+    for (size_t record = 0; record < mMaterials.size(); ++record) {
+        if (mRecordMaterial[record] != material) continue;
+        MaterialBinding& binding = mMaterials[record];
+        binding.iridescence = on;
+        binding.features = on ? binding.features | SPECULA_MATERIAL_IRIDESCENCE : binding.features & ~uint32_t(SPECULA_MATERIAL_IRIDESCENCE);
+        mRecords[record].flags.x = (mRecords[record].flags.x & ~uint32_t(SPECULA_MATERIAL_IRIDESCENCE)) | (binding.features & SPECULA_MATERIAL_IRIDESCENCE);
         mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
                                &mRecords[record].flags.x);
     }

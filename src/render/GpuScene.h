@@ -31,6 +31,8 @@ struct GpuPrimitive {
 enum class TextureSlot {
     BaseColor, MetallicRoughness, Normal, Occlusion, Emissive,
     Clearcoat, ClearcoatRoughness, ClearcoatNormal, ///< KHR_materials_clearcoat (CLEARCOAT variant only)
+    SheenColor, SheenRoughness, Anisotropy,         ///< issue 18's other extensions: unused in this branch
+    Iridescence, IridescenceThickness,              ///< KHR_materials_iridescence (IRIDESCENCE variant only)
     Count
 };
 /// The texture unit of each slot (shaders/shared/Bindings.h): the first five are units 0-4.
@@ -43,6 +45,7 @@ struct MaterialBinding {
     bool doubleSided = false;
     float transmission = 0.0f; ///< KHR_materials_transmission factor
     bool clearcoat = false;    ///< KHR_materials_clearcoat: the CLEARCOAT variant, whose units 19-21 are bound
+    bool iridescence = false;  ///< KHR_materials_iridescence: the IRIDESCENCE variant, whose units 25-26 are bound
     uint32_t features = 0; ///< SPECULA_MATERIAL_* bits: selects the shader variant
 };
 
@@ -89,6 +92,9 @@ public:
     /// Sets or clears SPECULA_MATERIAL_CLEARCOAT of `material` (and its copies): a layer of factor
     /// 0 is no layer, so its variant goes.
     void setClearcoat(int material, bool on);
+    /// Sets or clears SPECULA_MATERIAL_IRIDESCENCE of `material` (and its copies): a film of
+    /// factor 0 is no film, so its variant goes.
+    void setIridescence(int material, bool on);
     /// Writes `size` bytes at `offset` within `material`'s record (and its copies'), in the
     /// CPU copy and in the buffer: no other byte of the buffer is written.
     void writeMaterial(int material, size_t offset, size_t size, const void* data);

@@ -203,12 +203,13 @@ struct Renderer::Impl {
 
 Renderer::Renderer() : mImpl(std::make_unique<Impl>())
 {
-    // The forward pass binds units up to SPECULA_UNIT_CLEARCOAT_NORMAL (shaders/shared/Bindings.h).
-    static_assert(SPECULA_UNIT_CLEARCOAT_NORMAL > SPECULA_UNIT_ENVIRONMENT_CUBE && SPECULA_UNIT_ENVIRONMENT_CUBE > SPECULA_UNIT_TRANSMISSION &&
+    // The forward pass binds units up to SPECULA_UNIT_IRIDESCENCE_THICKNESS (shaders/shared/Bindings.h).
+    static_assert(SPECULA_UNIT_IRIDESCENCE_THICKNESS > SPECULA_UNIT_CLEARCOAT_NORMAL &&
+                  SPECULA_UNIT_CLEARCOAT_NORMAL > SPECULA_UNIT_ENVIRONMENT_CUBE && SPECULA_UNIT_ENVIRONMENT_CUBE > SPECULA_UNIT_TRANSMISSION &&
                   SPECULA_UNIT_TRANSMISSION > SPECULA_UNIT_IRRADIANCE);
-    if (gl::maxTextureUnits() <= SPECULA_UNIT_CLEARCOAT_NORMAL)
+    if (gl::maxTextureUnits() <= SPECULA_UNIT_IRIDESCENCE_THICKNESS)
         throw Error("this OpenGL implementation has {} texture units; Specula needs {}", gl::maxTextureUnits(),
-                    SPECULA_UNIT_CLEARCOAT_NORMAL + 1);
+                    SPECULA_UNIT_IRIDESCENCE_THICKNESS + 1);
 }
 Renderer::~Renderer() = default;
 
@@ -496,6 +497,9 @@ glm::vec4 Renderer::materialParameter(int material, MaterialParameter parameter)
     case MaterialParameter::SectorLight: return glm::vec4(r.emissive.w * 255.0f, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::ClearcoatFactor: return glm::vec4(r.clearcoat.x, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::ClearcoatRoughness: return glm::vec4(r.clearcoat.y, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::IridescenceFactor: return glm::vec4(r.iridescence.x, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::IridescenceIor: return glm::vec4(r.iridescence.y, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::IridescenceThickness: return glm::vec4(r.iridescence.z, r.iridescence.w, 0.0f, 0.0f);
     }
     return glm::vec4(0.0f);
 }
@@ -550,6 +554,22 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::ClearcoatRoughness: {
         const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
         gpu.writeMaterial(material, offsetof(GpuMaterial, clearcoat) + sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::IridescenceFactor: {
+        const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, iridescence), sizeof(float), &v.x);
+        gpu.setIridescence(material, v.x > 0.0f);
+        break;
+    }
+    case MaterialParameter::IridescenceIor: {
+        const glm::vec4 v(std::max(value.x, 1.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, iridescence) + sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::IridescenceThickness: {
+        const glm::vec4 v = glm::max(value, glm::vec4(0.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, iridescence) + 2 * sizeof(float), 2 * sizeof(float), &v.x);
         break;
     }
     }

@@ -44,8 +44,11 @@ enum class MaterialParameter {
     SectorLight,    ///< x, the Doom model's sector light level, 0–255
     ClearcoatFactor,    ///< x, KHR_materials_clearcoat factor (0 = no layer: the CLEARCOAT variant goes)
     ClearcoatRoughness, ///< x, the layer's perceptual roughness
+    IridescenceFactor,    ///< x, KHR_materials_iridescence factor (0 = no film: the IRIDESCENCE variant goes)
+    IridescenceIor,       ///< x, the film's IOR (at least 1)
+    IridescenceThickness, ///< x minimum, y maximum thickness (nm, at least 0)
 };
-constexpr int kMaterialParameterCount = int(MaterialParameter::ClearcoatRoughness) + 1;
+constexpr int kMaterialParameterCount = int(MaterialParameter::IridescenceThickness) + 1;
 
 /// How the specular lobe integrates image-based light (docs/ibl.md).
 enum class IblSpecular {

@@ -9,7 +9,7 @@ std::optional<DebugView> parseDebugView(std::string_view name)
     if (name == "bloom") return DebugView::Bloom;
     for (DebugView view : {DebugView::BaseColor, DebugView::Normal, DebugView::Roughness, DebugView::Metallic, DebugView::Occlusion,
                            DebugView::Emissive, DebugView::BrdfD, DebugView::BrdfG, DebugView::BrdfF, DebugView::Cascades,
-                           DebugView::ShadowAtlas, DebugView::LightCount})
+                           DebugView::ShadowAtlas, DebugView::LightCount, DebugView::Iridescence})
         if (name == debugViewName(view)) return view;
     return std::nullopt;
 }
@@ -32,6 +32,7 @@ const char* debugViewName(DebugView view)
     case DebugView::Cascades: return "cascades";
     case DebugView::ShadowAtlas: return "shadow-atlas";
     case DebugView::LightCount: return "light-count";
+    case DebugView::Iridescence: return "iridescence";
     }
     return "none";
 }

@@ -29,6 +29,9 @@ enum class DebugView {
     /// Lights per pixel: the length of each shading point's light list (its cluster's, with
     /// the directional lights), as a heat map with its legend (docs/clustered-shading.md).
     LightCount,
+    /// The specular lobe's Fresnel at n·v (rgb): with KHR_materials_iridescence mix(F, the
+    /// film's thin-film Fresnel, factor), else F alone (shaders/forward/iridescence.glsl).
+    Iridescence,
 };
 
 std::optional<DebugView> parseDebugView(std::string_view name);

@@ -181,7 +181,8 @@ void evaluateLobes(const Surface& s, const dvec3& n, const dvec3& v, const dvec3
     const double NoV = std::abs(glm::dot(n, v));
     const double NoH = std::clamp(glm::dot(n, h), 0.0, 1.0);
     const double VoH = std::clamp(glm::dot(v, h), 0.0, 1.0);
-    const dvec3 f0 = glm::mix(glm::min(s.f0Dielectric * s.specularColor, dvec3(1.0)) * s.specularFactor, s.baseColor, s.metallic);
+    const dvec3 f0Dielectric = glm::min(s.f0Dielectric * s.specularColor, dvec3(1.0)) * s.specularFactor;
+    const dvec3 f0 = glm::mix(f0Dielectric, s.baseColor, s.metallic);
     const double f90 = s.specularFactor + (1.0 - s.specularFactor) * s.metallic;
     const dvec3 diffuseColor = s.baseColor * (1.0 - s.metallic);
     const dvec3 F = fresnel(s.fresnel, f0, f90, VoH);
@@ -191,6 +192,12 @@ void evaluateLobes(const Surface& s, const dvec3& n, const dvec3& v, const dvec3
     const double Fd = diffuseLobe(s.diffuse, r, NoV, NoL, VoH, glm::dot(v, l));
     diffuse = (dvec3(1.0) - F) * diffuseColor * Fd;
     specular = F * (D * V);
+    if (s.iridescence.factor > 0.0) {
+        const dvec3 film = filmFresnel(s.iridescence, f0Dielectric, s.baseColor, s.metallic, VoH);
+        const double filmMax = std::max({film.r, film.g, film.b});
+        diffuse = glm::mix(dvec3(1.0) - F, dvec3(std::max(1.0 - filmMax, 0.0)), s.iridescence.factor) * diffuseColor * Fd;
+        specular = glm::mix(F, film, s.iridescence.factor) * (D * V);
+    }
     if (s.clearcoat > 0.0) {
         const double rc = std::clamp(s.clearcoatRoughness, kMinPerceptualRoughness, 1.0);
         const double Vc = s.imageBased ? visibilityImageBased(s.geometry, NoV, NoL, NoH, VoH, rc)

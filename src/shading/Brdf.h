@@ -4,6 +4,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/MaterialModel.h"
+#include "shading/Iridescence.h"
 
 namespace specula::render::brdf {
 
@@ -62,6 +63,9 @@ struct Surface {
     /// the specular lobe (F0 0.04, F90 1, the same D, V and F terms).
     double clearcoat = 0.0;
     double clearcoatRoughness = 0.0; ///< perceptual, clamped like perceptualRoughness
+    /// KHR_materials_iridescence (shaders/forward/iridescence.glsl): F = mix(F, filmFresnel(v·h),
+    /// factor) in the specular lobe and the diffuse lobe weighted by mix(1 − F, 1 − max(film F), factor).
+    ThinFilm iridescence;
 };
 
 /// f(l, v) (1/sr) for unit n, v, l, not multiplied by NoL. Zero when NoL <= 0.

@@ -50,6 +50,8 @@ BrdfCurves sampleBrdfCurves(const BrdfPlotMaterial& m, const ResolvedShading& sh
     surface.diffuse = shading.diffuse;
     surface.clearcoat = std::clamp(m.clearcoat, 0.0, 1.0);
     surface.clearcoatRoughness = m.clearcoatRoughness;
+    surface.iridescence = {std::clamp(m.iridescence, 0.0, 1.0), std::max(m.iridescenceIor, 1.0), std::max(m.iridescenceThickness, 0.0)};
+    const glm::dvec3 f0Dielectric = glm::min(0.04 * m.specularColor, glm::dvec3(1.0)) * m.specularFactor;
     // The same F0 and F90 as brdf::evaluate and makeSurfaceBrdf in shaders/brdf/brdf.glsl.
     const glm::dvec3 f0 = glm::mix(glm::min(0.04 * m.specularColor, glm::dvec3(1.0)) * m.specularFactor, m.baseColor, metallic);
     const double f90 = m.specularFactor + (1.0 - m.specularFactor) * metallic;
@@ -81,7 +83,13 @@ BrdfCurves sampleBrdfCurves(const BrdfPlotMaterial& m, const ResolvedShading& sh
         const double VoH = std::clamp(glm::dot(view, h), 0.0, 1.0);
         curves.d.push_back(float(brdf::distribution(shading.distribution, NoH, r * r)));
         curves.v.push_back(float(brdf::visibility(shading.geometry, NoV, NoL, NoH, VoH, r)));
-        curves.f.push_back(luminance(brdf::fresnel(shading.fresnel, f0, f90, VoH)));
+        glm::dvec3 F = brdf::fresnel(shading.fresnel, f0, f90, VoH);
+        if (surface.iridescence.factor > 0.0)
+            F = glm::mix(F, brdf::filmFresnel(surface.iridescence, f0Dielectric, m.baseColor, metallic, VoH), surface.iridescence.factor);
+        curves.f.push_back(luminance(F));
+        curves.fRed.push_back(float(F.r));
+        curves.fGreen.push_back(float(F.g));
+        curves.fBlue.push_back(float(F.b));
         curves.whole.push_back(luminance(brdf::evaluate(surface, n, view, l)) * float(NoL));
     }
     return curves;

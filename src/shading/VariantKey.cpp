@@ -22,6 +22,7 @@ constexpr int kShadowFilterShift = 35, kShadowTapsShift = 37;
 // Material features above the first nine bits, and the transparency choices.
 constexpr uint64_t kBlendTransparent = uint64_t(1) << 39, kTransmission = uint64_t(1) << 40, kOit = uint64_t(1) << 41;
 constexpr uint64_t kClearcoat = uint64_t(1) << 42;
+constexpr uint64_t kIridescence = uint64_t(1) << 45; // 43 and 44 left to sheen and anisotropy (issue 18)
 constexpr int kDebugShift = 16, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
               kDiffuseShift = 30;
 constexpr uint64_t field(int shift, int bits) { return ((uint64_t(1) << bits) - 1) << shift; }
@@ -67,6 +68,7 @@ constexpr std::array kTable = {
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::BrdfF), "DEBUG_VIEW_BRDF_F", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::Cascades), "DEBUG_VIEW_CASCADES", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::LightCount), "DEBUG_VIEW_LIGHT_COUNT", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::Iridescence), "DEBUG_VIEW_IRIDESCENCE", K::DebugView},
     VariantDefine{kIbl, kIbl, "IBL", K::FrameFeature},
     VariantDefine{kIblImportance, kIblImportance, "IBL_IMPORTANCE", K::FrameFeature},
     VariantDefine{kEnergyCompensation, kEnergyCompensation, "ENERGY_COMPENSATION", K::FrameFeature},
@@ -94,10 +96,11 @@ constexpr std::array kTable = {
     VariantDefine{kBlendTransparent, kBlendTransparent, "BLEND_TRANSPARENT", K::MaterialFeature},
     VariantDefine{kTransmission, kTransmission, "TRANSMISSION", K::MaterialFeature},
     VariantDefine{kClearcoat, kClearcoat, "CLEARCOAT", K::MaterialFeature},
+    VariantDefine{kIridescence, kIridescence, "IRIDESCENCE", K::MaterialFeature},
     VariantDefine{kOit, kOit, "OIT", K::FrameFeature},
 };
 static_assert((kFeatureMask & (kIbl | kIblImportance | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
-static_assert(uint64_t(DebugView::LightCount) < (uint64_t(1) << 4)); // the debug field's 4 bits
+static_assert(uint64_t(DebugView::Iridescence) < (uint64_t(1) << 4)); // the debug field's 4 bits
 static_assert(((kShadowTapsMask | kShadowFilterMask) & (kBlendTransparent | kTransmission | kOit)) == 0);
 static_assert((kDiffuseMask & (kShadowDirectional | kShadowSpot | kShadowPoint | kShadowFilterMask | kShadowTapsMask)) == 0);
 
@@ -128,6 +131,10 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
         if ((features & SPECULA_MATERIAL_TRANSMISSION) && !doomIndexed && !isMaterialDebugView(debugView)) key |= kTransmission;
         // KHR_materials_clearcoat: the layer, in the lit frame only.
         if ((features & SPECULA_MATERIAL_CLEARCOAT) && !doomIndexed && !isMaterialDebugView(debugView)) key |= kClearcoat;
+        // KHR_materials_iridescence: the film, in the lit frame and in its own debug view.
+        if ((features & SPECULA_MATERIAL_IRIDESCENCE) && !doomIndexed &&
+            (!isMaterialDebugView(debugView) || debugView == DebugView::Iridescence))
+            key |= kIridescence;
     }
     // OIT's accumulation is for the blended list only (transmissive draws, blended or not, are
     // drawn sorted before it), and never in an indexed frame.

@@ -1,6 +1,7 @@
 // The forward pass's variant key (shading/VariantKey): one table of bits and defines.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -86,4 +87,25 @@ TEST(VariantKey, TableRowsAreDistinct)
         EXPECT_NE(row.value, 0u) << row.define << ": a default has no define";
         EXPECT_EQ(row.value & ~row.mask, 0u) << row.define;
     }
+}
+
+TEST(VariantKey, IridescenceOnlyForFilmedMaterialsInTheLitFrameAndItsOwnView)
+{
+    // KHR_materials_iridescence: a material without a film pays nothing (no define); with one,
+    // the lit frame and DebugView::Iridescence get IRIDESCENCE, other material views and a Doom
+    // frame's indices do not.
+    const auto make = [](uint32_t features, DebugView d, bool doom = false) {
+        return ForwardVariant::make(features, {}, d, IblVariant::None, false, false, doom).defines();
+    };
+    const auto has = [](const std::vector<std::string>& defines) {
+        return std::find(defines.begin(), defines.end(), "IRIDESCENCE") != defines.end();
+    };
+    EXPECT_FALSE(has(make(0, DebugView::None)));
+    EXPECT_FALSE(has(make(0, DebugView::Iridescence)));
+    EXPECT_TRUE(has(make(SPECULA_MATERIAL_IRIDESCENCE, DebugView::None)));
+    EXPECT_TRUE(has(make(SPECULA_MATERIAL_IRIDESCENCE, DebugView::Iridescence)));
+    EXPECT_FALSE(has(make(SPECULA_MATERIAL_IRIDESCENCE, DebugView::BrdfF)));
+    EXPECT_FALSE(has(make(SPECULA_MATERIAL_IRIDESCENCE, DebugView::None, true)));
+    const std::vector<std::string> view = make(0, DebugView::Iridescence);
+    EXPECT_NE(std::find(view.begin(), view.end(), "DEBUG_VIEW_IRIDESCENCE"), view.end());
 }
