@@ -7,7 +7,9 @@
 // tests/unit/test_iridescence.cpp. Punctual light on spheres (thicknesses, IORs, factors, a
 // metal and a dielectric), a glTF quad whose strength and thickness come from textures, image-
 // based light in a uniform environment (split sum and --ibl importance, and the furnace bound),
-// and the debug view.
+// and the debug view. Broken on purpose (docs/materials.md), each fails: the optical path with
+// cos theta1, the diffuse weight 1 - F per channel, the thickness texture ignored, the split
+// sum's Fresnel left as the table's, no film per importance sample, the debug view without it.
 #include "GlTestContext.h"
 #include "ImageProbe.h"
 #include "SphereTiles.h"
