@@ -94,6 +94,15 @@ anisotropy["materials"][0]["extensions"] = {"KHR_materials_anisotropy": {
     "anisotropyTexture": {"index": 0, "texCoord": 0, "extensions": {"KHR_texture_transform": {"rotation": 0.5}}}}}
 anisotropy["extensionsUsed"].append("KHR_materials_anisotropy")
 write("seeds/gltf/anisotropy.gltf", json.dumps(anisotropy, indent=1))
+# KHR_materials_iridescence: factor, film IOR, thickness range, both textures (one with a texCoord
+# and a KHR_texture_transform), so the fuzzer reaches the extension's importer.
+iridescence = triangle_gltf("buffer.bin", {"uri": "texture.png"})
+iridescence["extensionsUsed"].append("KHR_materials_iridescence")
+iridescence["materials"][0]["extensions"] = {"KHR_materials_iridescence": {
+    "iridescenceFactor": 0.8, "iridescenceTexture": {"index": 0}, "iridescenceIor": 1.6,
+    "iridescenceThicknessMinimum": 150, "iridescenceThicknessMaximum": 650,
+    "iridescenceThicknessTexture": {"index": 0, "texCoord": 0, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0], "scale": [-1, 1]}}}}}
+write("seeds/gltf/iridescence.gltf", json.dumps(iridescence))
 
 def glb(document, binary):
     text = json.dumps(document).encode()

@@ -40,7 +40,7 @@ void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
     command->add_option("--brdf-diffuse", frame.brdfDiffuse, "diffuse lobe: lambert (default), oren-nayar, burley");
     command->add_option("--shading", frame.shading, "every material's shading model: pbr, unlit, flat, gouraud, phong, blinn-phong, doom");
     command->add_option("--debug-view", frame.debugView,
-                        "show one buffer: base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, brdf-f, ssao, bloom, cascades, shadow-atlas, light-count, sheen, anisotropy");
+                        "show one buffer: base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, brdf-f, ssao, bloom, cascades, shadow-atlas, light-count, sheen, anisotropy, iridescence, clearcoat, clearcoat-normal");
     command
         ->add_option_function<std::string>(
             "--camera",

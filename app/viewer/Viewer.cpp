@@ -381,6 +381,12 @@ void Viewer::setMaterialParameter(int index, render::MaterialParameter parameter
     case render::MaterialParameter::SheenRoughness: m.sheenRoughnessFactor = std::clamp(value.x, 0.0f, 1.0f); break;
     case render::MaterialParameter::AnisotropyStrength: m.anisotropyStrength = std::clamp(value.x, 0.0f, 1.0f); break;
     case render::MaterialParameter::AnisotropyRotation: m.anisotropyRotation = value.x; break;
+    case render::MaterialParameter::IridescenceFactor: m.iridescenceFactor = std::clamp(value.x, 0.0f, 1.0f); break;
+    case render::MaterialParameter::IridescenceIor: m.iridescenceIor = std::max(value.x, 1.0f); break;
+    case render::MaterialParameter::IridescenceThickness:
+        m.iridescenceThicknessMinimum = std::max(value.x, 0.0f);
+        m.iridescenceThicknessMaximum = std::max(value.y, 0.0f);
+        break;
     case render::MaterialParameter::PhongSpecular: // the classic ks: only in the record
     case render::MaterialParameter::SpecularColor: break; // colour × ior: setMaterialIor
     }

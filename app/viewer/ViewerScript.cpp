@@ -292,6 +292,15 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         if (w.size() > 5) viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::SheenRoughness, glm::vec4(w.number(5)));
         return 0;
     }
+    if (a == "material-iridescence") {
+        // material-iridescence I FACTOR [IOR [MIN_NM MAX_NM]]
+        const int i = w.integer(1);
+        viewer.setMaterialParameter(i, render::MaterialParameter::IridescenceFactor, glm::vec4(w.number(2)));
+        if (w.size() > 3) viewer.setMaterialParameter(i, render::MaterialParameter::IridescenceIor, glm::vec4(w.number(3)));
+        if (w.size() > 5)
+            viewer.setMaterialParameter(i, render::MaterialParameter::IridescenceThickness, glm::vec4(w.number(4), w.number(5), 0.0f, 0.0f));
+        return 0;
+    }
     if (a == "material-metallic") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Metallic, glm::vec4(w.number(2))); return 0; }
     if (a == "material-emissive") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Emissive, glm::vec4(w.vec3(2), 0.0f)); return 0; }
     if (a == "material-ior") { viewer.setMaterialIor(w.integer(1), w.number(2)); return 0; }

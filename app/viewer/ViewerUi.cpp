@@ -365,6 +365,13 @@ void materialsPanel(Viewer& viewer)
     float anisotropy = value(MaterialParameter::AnisotropyStrength).x, rotation = value(MaterialParameter::AnisotropyRotation).x;
     if (ImGui::SliderFloat("anisotropy", &anisotropy, 0.0f, 1.0f)) set(MaterialParameter::AnisotropyStrength, glm::vec4(anisotropy));
     if (ImGui::SliderAngle("anisotropy rotation", &rotation, -180.0f, 180.0f)) set(MaterialParameter::AnisotropyRotation, glm::vec4(rotation));
+    ImGui::TextDisabled("KHR_materials_iridescence");
+    float iridescence = value(MaterialParameter::IridescenceFactor).x, iridescenceIor = value(MaterialParameter::IridescenceIor).x;
+    glm::vec4 thickness = value(MaterialParameter::IridescenceThickness);
+    if (ImGui::SliderFloat("iridescence", &iridescence, 0.0f, 1.0f)) set(MaterialParameter::IridescenceFactor, glm::vec4(iridescence));
+    if (ImGui::SliderFloat("film IOR", &iridescenceIor, 1.0f, 3.0f)) set(MaterialParameter::IridescenceIor, glm::vec4(iridescenceIor));
+    if (ImGui::DragFloat2("film thickness min, max (nm)", &thickness.x, 1.0f, 0.0f, 2000.0f))
+        set(MaterialParameter::IridescenceThickness, thickness);
     ImGui::Separator();
     ImGui::TextDisabled("Phong, Blinn-Phong, Gouraud, flat");
     glm::vec4 ks = value(MaterialParameter::PhongSpecular);
@@ -404,6 +411,11 @@ void brdfPanel(Viewer& viewer)
     material.sheenColor = glm::dvec3(glm::vec3(value(MaterialParameter::SheenColor)));
     material.sheenRoughness = value(MaterialParameter::SheenRoughness).x;
     material.anisotropy = value(MaterialParameter::AnisotropyStrength).x;
+    if (value(MaterialParameter::IridescenceFactor).x > 0.0f) {
+        material.iridescence = value(MaterialParameter::IridescenceFactor).x;
+        material.iridescenceIor = value(MaterialParameter::IridescenceIor).x;
+        material.iridescenceThickness = value(MaterialParameter::IridescenceThickness).y; // the maximum: no textures
+    }
     const render::FrameSettings& settings = viewer.settings();
     const render::ResolvedShading shading =
         render::resolveShading(settings.materialOverride, settings.brdfGeometry, render::packShading(renderer.materialShading(m)));
@@ -430,6 +442,12 @@ void brdfPanel(Viewer& viewer)
         ImGui::PlotLines("D", curves.d.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
         ImGui::PlotLines("V = G/(4 NoL NoV)", curves.v.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
         ImGui::PlotLines("F (luminance)", curves.f.data(), n, 0, nullptr, 0.0f, 1.0f, ImVec2(0, 60));
+        if (material.iridescence > 0.0) {
+            // The film's interference colours F: each channel apart.
+            ImGui::PlotLines("F red (film)", curves.fRed.data(), n, 0, nullptr, 0.0f, 1.0f, ImVec2(0, 40));
+            ImGui::PlotLines("F green (film)", curves.fGreen.data(), n, 0, nullptr, 0.0f, 1.0f, ImVec2(0, 40));
+            ImGui::PlotLines("F blue (film)", curves.fBlue.data(), n, 0, nullptr, 0.0f, 1.0f, ImVec2(0, 40));
+        }
         ImGui::PlotLines("f x NoL", curves.whole.data(), n, 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
         if (!curves.sheen.empty())
             ImGui::PlotLines("sheen x NoL (Charlie)", curves.sheen.data(), int(curves.sheen.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 60));
@@ -561,7 +579,7 @@ void postPanel(Viewer& viewer)
     }
     if (ImGui::BeginCombo("debug view", debugViewName(s.debugView))) {
         // Every view up to the last one (BrdfF), material inputs and BRDF terms included.
-        for (int k = 0; k <= int(DebugView::Anisotropy); ++k) {
+        for (int k = 0; k <= int(kLastDebugView); ++k) {
             const auto d = DebugView(k);
             if (ImGui::Selectable(debugViewName(d), d == s.debugView)) s.debugView = d;
         }

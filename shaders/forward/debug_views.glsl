@@ -8,7 +8,8 @@
 #if defined(DEBUG_VIEW_BASE_COLOR) || defined(DEBUG_VIEW_NORMAL) || defined(DEBUG_VIEW_ROUGHNESS) || \
     defined(DEBUG_VIEW_METALLIC) || defined(DEBUG_VIEW_OCCLUSION) || defined(DEBUG_VIEW_EMISSIVE) || \
     defined(DEBUG_VIEW_BRDF_D) || defined(DEBUG_VIEW_BRDF_G) || defined(DEBUG_VIEW_BRDF_F) || defined(DEBUG_VIEW_CASCADES) || \
-    defined(DEBUG_VIEW_LIGHT_COUNT) || defined(DEBUG_VIEW_SHEEN) || defined(DEBUG_VIEW_ANISOTROPY)
+    defined(DEBUG_VIEW_LIGHT_COUNT) || defined(DEBUG_VIEW_SHEEN) || defined(DEBUG_VIEW_ANISOTROPY) || \
+    defined(DEBUG_VIEW_IRIDESCENCE) || defined(DEBUG_VIEW_CLEARCOAT) || defined(DEBUG_VIEW_CLEARCOAT_NORMAL)
 #define DEBUG_VIEW
 #endif
 
@@ -61,6 +62,19 @@ vec3 debugBrdfTerm(vec3 baseColor, float metallic, float perceptualRoughness, ve
 #endif
 }
 
+// The specular lobe's Fresnel at n.v: with KHR_materials_iridescence mix(F, the film's, factor)
+// (forward/iridescence.glsl; the IRIDESCENCE variant stays on for this view), else F alone.
+vec3 debugIridescence(vec3 baseColor, float metallic, float perceptualRoughness, vec3 n, vec3 v)
+{
+    SurfaceBrdf s = makeSurfaceBrdf(baseColor, metallic, perceptualRoughness, material.specular);
+    float NoV = max(dot(n, v), 1e-4);
+#if defined(IRIDESCENCE)
+    return iridescentFresnelAt(s, makeIridescence(baseColor, metallic), NoV);
+#else
+    return brdfF(s, NoV);
+#endif
+}
+
 vec3 debugViewValue(vec3 baseColor, float metallic, float perceptualRoughness, vec3 n, vec3 v, float occlusion, vec3 emissive)
 {
 #if defined(DEBUG_VIEW_BASE_COLOR)
@@ -83,6 +97,11 @@ vec3 debugViewValue(vec3 baseColor, float metallic, float perceptualRoughness, v
 #else
     return vec3(0.0);
 #endif
+#elif defined(DEBUG_VIEW_IRIDESCENCE)
+    return debugBytes(debugIridescence(baseColor, metallic, perceptualRoughness, n, v));
+#elif defined(DEBUG_VIEW_CLEARCOAT) || defined(DEBUG_VIEW_CLEARCOAT_NORMAL)
+    // No layer (a coated material's variant has CLEARCOAT, and pbr.frag shows the layer's own).
+    return vec3(0.0);
 #elif defined(DEBUG_VIEW_LIGHT_COUNT)
     // The length of this point's light list (its cluster's, directional lights included), in
     // the heat map's bins (shared/ClusterData.h; the legend is render/passes/DebugViewPass's).

@@ -5,7 +5,7 @@
 // VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND (premultiplied output; BLEND_TRANSPARENT: specular and
 // emission unscaled by alpha), TRANSMISSION (forward/transmission.glsl), CLEARCOAT
 // (forward/clearcoat.glsl), SHEEN (forward/sheen.glsl), ANISOTROPY (forward/anisotropy.glsl),
-// DOUBLE_SIDED; OIT
+// IRIDESCENCE (forward/iridescence.glsl), DOUBLE_SIDED; OIT
 // (weighted blended transparency's two targets); per frame, SSAO, and DOOM_INDEXED (a
 // Doom frame: with SHADING_DOOM, the output is a palette index and a colour-map level, not a
 // colour; render/DoomPass). A material without a feature pays nothing for it; without
@@ -15,6 +15,9 @@
 #include "../common/frame_block.glsl"
 #include "../shared/MaterialData.h"
 #include "../brdf/brdf.glsl"
+// Before ibl/importance.glsl, which includes it in a branch: a file is included once, and the
+// IRIDESCENCE variant needs it without IBL too (pure functions: unused, they cost nothing).
+#include "../brdf/thin_film.glsl"
 #include "../lights/light_list.glsl"
 #include "../lights/punctual.glsl"
 #if defined(IBL)
@@ -77,6 +80,9 @@ const float kHalfMax = 65504.0;
 #endif
 #if defined(ANISOTROPY)
 #include "anisotropy.glsl"
+#endif
+#if defined(IRIDESCENCE)
+#include "iridescence.glsl"
 #endif
 #include "shading_models.glsl"
 #include "debug_views.glsl"
@@ -185,7 +191,15 @@ void main()
 
 #if defined(DEBUG_VIEW)
     // One input or BRDF term instead of the frame (debug_views.glsl).
-    writeColor(vec4(debugViewValue(baseColor.rgb, metallic, perceptualRoughness, n, v, occlusion, materialEmissive()), 1.0));
+    vec3 debugValue = debugViewValue(baseColor.rgb, metallic, perceptualRoughness, n, v, occlusion, materialEmissive());
+#if defined(CLEARCOAT) && defined(DEBUG_VIEW_CLEARCOAT)
+    // The layer's factor and roughness as it reads them (forward/clearcoat.glsl).
+    ClearcoatLayer debugCoat = makeClearcoat(geometricNormal, flip, v);
+    debugValue = debugBytes(vec3(debugCoat.factor, debugCoat.iblRoughness, 0.0));
+#elif defined(CLEARCOAT) && defined(DEBUG_VIEW_CLEARCOAT_NORMAL)
+    debugValue = debugBytes(makeClearcoat(geometricNormal, flip, v).n * 0.5 + 0.5); // world space
+#endif
+    writeColor(vec4(debugValue, 1.0));
 #elif defined(DOOM_INDEXED)
     // Doom's 8-bit frame (doom.glsl; the colour-map pass makes the colours). An index cannot
     // be blended: a blended material is cut out at half coverage instead.
@@ -214,6 +228,9 @@ void main()
 #if defined(SHEEN)
     SheenLayer sheen = makeSheen(NoV);
     vec3 sheenLight = vec3(0.0); // the sheen lobe's reflection, added over the scaled base
+#endif
+#if defined(IRIDESCENCE)
+    ThinFilm film = makeIridescence(baseColor.rgb, metallic);
 #endif
 
 #if defined(IBL) || defined(ENERGY_COMPENSATION)
@@ -260,8 +277,12 @@ void main()
         sheenLight += sheenPunctual(sheen, n, v, l, NoV, NoL) * illuminance;
 #endif
         vec3 diffuse, specular;
-#if defined(ANISOTROPY)
+#if defined(ANISOTROPY) && defined(IRIDESCENCE)
+        evaluateIridescentAnisotropicLobes(surface, film, anisotropy, n, v, l, diffuse, specular);
+#elif defined(ANISOTROPY)
         evaluateAnisotropicLobes(surface, anisotropy, n, v, l, diffuse, specular);
+#elif defined(IRIDESCENCE)
+        evaluateIridescentLobes(surface, film, n, v, l, diffuse, specular);
 #else
         evaluateBrdfLobes(surface, n, v, l, diffuse, specular);
 #endif
@@ -280,32 +301,46 @@ void main()
     vec3 lookupNormal = n;
 #endif
     vec3 r = reflect(-v, lookupNormal);
-    // With KHR_materials_specular's F90 < 1 the split sum's grazing term scales with it.
-    vec3 specularAlbedo = (surface.f0 * dfg.x + surface.f90 * dfg.y) * energyCompensation;
+#if defined(IRIDESCENCE)
+    ThinFilm iblFilm = film;
+#else
+    ThinFilm iblFilm = noThinFilm();
+#endif
+    // The split-sum terms of E = f0 A + f90 B and the multiple-scattering compensation: the
+    // DFG table's, or the anisotropic sampler's own (below).
+    vec2 albedoTerms = dfg;
+    vec3 albedoCompensation = energyCompensation;
 #if defined(IBL_IMPORTANCE) && defined(ANISOTROPY)
     // The anisotropic lobe per pixel; its split-sum terms (the albedo the diffuse lobe leaves,
     // the compensation) from the same samples: the table's are an isotropic lobe's, which at
     // grazing angles can reflect far less than a lobe that is smooth across b.
-    vec2 sampledDfg;
-    vec3 specularIbl = importanceSampledSpecularAnisotropic(surface, n, anisotropy.t, anisotropy.b,
-                                                            anisotropicAlphas(anisotropy, iblRoughness * iblRoughness), v, sampledDfg);
+    vec3 specularIbl = importanceSampledSpecularAnisotropic(surface, iblFilm, n, anisotropy.t, anisotropy.b,
+                                                            anisotropicAlphas(anisotropy, iblRoughness * iblRoughness), v, albedoTerms);
 #if defined(ENERGY_COMPENSATION)
-    vec3 sampledCompensation = 1.0 + surface.f0 * (1.0 / max(sampledDfg.x + sampledDfg.y, 1e-4) - 1.0);
-#else
-    const vec3 sampledCompensation = vec3(1.0);
+    albedoCompensation = 1.0 + surface.f0 * (1.0 / max(albedoTerms.x + albedoTerms.y, 1e-4) - 1.0);
 #endif
-    specularIbl *= sampledCompensation;
-    specularAlbedo = (surface.f0 * sampledDfg.x + surface.f90 * sampledDfg.y) * sampledCompensation;
+    specularIbl *= albedoCompensation;
+#endif
+    // With KHR_materials_specular's F90 < 1 the split sum's grazing term scales with it.
+    vec3 specularAlbedo = (surface.f0 * albedoTerms.x + surface.f90 * albedoTerms.y) * albedoCompensation;
+#if defined(IRIDESCENCE)
+    // The film's Fresnel at n.v in place of the table's: E = F_iridescence(n.v) (A + B), and
+    // the diffuse lobe below it weighted by 1 - max(E) (forward/iridescence.glsl).
+    vec3 filmAlbedo = thinFilmFresnel(film, NoV) * (albedoTerms.x + albedoTerms.y) * albedoCompensation;
+    vec3 diffuseWeightIbl = iridescentDiffuseWeight(specularAlbedo, filmAlbedo, film.factor);
+    specularAlbedo = mix(specularAlbedo, filmAlbedo, film.factor);
+#else
+    vec3 diffuseWeightIbl = 1.0 - specularAlbedo;
 #endif
     // What the specular lobe reflects, the diffuse lobe below it cannot: 1 - E keeps a white
     // dielectric in a white furnace at or below the environment's radiance.
-    vec3 diffuseIbl = irradianceCube(toEnvironment(n)) * surface.diffuseColor * INV_PI * (1.0 - specularAlbedo);
+    vec3 diffuseIbl = irradianceCube(toEnvironment(n)) * surface.diffuseColor * INV_PI * diffuseWeightIbl;
 #if defined(IBL_IMPORTANCE) && defined(ANISOTROPY)
-    // Above, before the diffuse lobe's 1 - E.
+    // Above, before the diffuse lobe's weight.
 #elif defined(IBL_IMPORTANCE)
     // The lobe integrated per pixel with this material's BRDF (ibl/importance.glsl); the
     // diffuse lobe keeps the split sum's 1 - E, E the DFG table's.
-    vec3 specularIbl = importanceSampledSpecular(surface, n, v, iblRoughness) * energyCompensation;
+    vec3 specularIbl = importanceSampledSpecular(surface, n, v, iblRoughness, iblFilm) * energyCompensation;
 #else
     vec3 specularIbl = prefilteredRadiance(specularDominantDirection(lookupNormal, r, iblRoughness), iblRoughness) * specularAlbedo;
 #endif
@@ -343,7 +378,11 @@ void main()
     // the viewing angle, 1 − F(n·v) (Schlick with F0 from the ior; exact at normal incidence).
     float transmission = material.transmission.x * (1.0 - metallic);
     vec3 behind = transmittedRadiance(n, v, vWorldPosition, material.transmission.y, material.transmission.z, iblRoughness);
+#if defined(IRIDESCENCE)
+    vec3 transmitted = transmission * iridescentDiffuseWeight(brdfF(surface, NoV), thinFilmFresnel(film, NoV), film.factor) * baseColor.rgb * behind;
+#else
     vec3 transmitted = transmission * (1.0 - brdfF(surface, NoV)) * baseColor.rgb * behind;
+#endif
     diffuseLight = diffuseLight * (1.0 - transmission) + transmitted;
 #endif
 

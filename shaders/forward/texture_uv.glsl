@@ -12,6 +12,8 @@ const uint TEX_CLEARCOAT_NORMAL = 7u;
 const uint TEX_SHEEN_COLOR = 8u;
 const uint TEX_SHEEN_ROUGHNESS = 9u;
 const uint TEX_ANISOTROPY = 10u; // 8, 9: KHR_materials_sheen's; 11, 12: KHR_materials_iridescence's
+const uint TEX_IRIDESCENCE = 11u; // 8-10: sheen and anisotropy (issue 18)
+const uint TEX_IRIDESCENCE_THICKNESS = 12u;
 
 // Texture coordinates of one texture: its uv set and KHR_texture_transform.
 vec2 textureUv(uint texture)

@@ -7,6 +7,7 @@
 // share of the lobe, Ω_s = 1 / (N pdf), against a base texel's Ω_p = 4π / (6 w²): the filter
 // then integrates what the N samples leave between them and no sample pattern shows.
 #include "sampling.glsl"
+#include "../brdf/thin_film.glsl"
 
 // Chosen by measurement against the Monte Carlo reference (docs/ibl.md, copper under
 // venice_1k, roughness 1): 32 samples 8.7 % mean error, 64 4.9 %, 128 3.1 %, 256 2.7 % (the
@@ -21,14 +22,20 @@ const float kIblLodBias = 0.0;
 // Radiance reflected by the specular lobe towards v (world space), not yet scaled by the
 // environment's intensity. `perceptualRoughness` is the unclamped image-based one: 0 is the
 // mirror, one fetch of level 0.
-vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float perceptualRoughness)
+// With IRIDESCENCE, `film` replaces each sample's Fresnel by mix(F, the film's F(v.h), factor)
+// (KHR_materials_iridescence; noThinFilm() for none).
+vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float perceptualRoughness, ThinFilm film)
 {
     float NoV = max(dot(n, v), 1e-4);
     float alpha = perceptualRoughness * perceptualRoughness;
     // Below roughness 0.01 the lobe is narrower than a base texel of a 1024² face: the mirror.
     if (alpha < 1e-4) {
         vec3 r = reflect(-v, n);
-        return brdfF(surface, NoV) * textureLod(uEnvironmentCube, toEnvironment(r), 0.0).rgb;
+        vec3 F = brdfF(surface, NoV);
+#if defined(IRIDESCENCE)
+        if (film.factor > 0.0) F = mix(F, thinFilmFresnel(film, NoV), film.factor);
+#endif
+        return F * textureLod(uEnvironmentCube, toEnvironment(r), 0.0).rgb;
     }
     SurfaceBrdf s = surface;
     s.perceptualRoughness = perceptualRoughness;
@@ -56,7 +63,11 @@ vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float percep
         const float dRatio = 1.0;
 #endif
         float weight = dRatio * brdfV(s, NoV, NoL, NoH, VoH) * NoL * 4.0 * VoH / max(NoH, 1e-6);
-        sum += brdfF(s, VoH) * weight * radiance;
+        vec3 F = brdfF(s, VoH);
+#if defined(IRIDESCENCE)
+        if (film.factor > 0.0) F = mix(F, thinFilmFresnel(film, VoH), film.factor);
+#endif
+        sum += F * weight * radiance;
     }
     return sum / float(IBL_IMPORTANCE_SAMPLES);
 }
@@ -66,8 +77,10 @@ vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float percep
 // half vectors from D_GGX_Anisotropic, the extension's anisotropic V. `albedo` is the same
 // samples' estimate of the lobe's split-sum terms, as the DFG table holds them (albedo = f0 x +
 // f90 y): the table has only isotropic lobes.
-// t, b, n: the lobe's orthonormal frame; alphas: its alpha_t and alpha_b (unclamped).
-vec3 importanceSampledSpecularAnisotropic(SurfaceBrdf surface, vec3 n, vec3 t, vec3 b, vec2 alphas, vec3 v, out vec2 dfg)
+// t, b, n: the lobe's orthonormal frame; alphas: its alpha_t and alpha_b (unclamped). With
+// IRIDESCENCE, `film` mixes into each sample's Fresnel as in importanceSampledSpecular (the
+// terms stay the film-less lobe's: the caller mixes the film's albedo from them).
+vec3 importanceSampledSpecularAnisotropic(SurfaceBrdf surface, ThinFilm film, vec3 n, vec3 t, vec3 b, vec2 alphas, vec3 v, out vec2 dfg)
 {
     float NoV = max(dot(n, v), 1e-4);
     // The mirror's: F(n.v) = f0 (1 - Fc) + f90 Fc.
@@ -75,7 +88,11 @@ vec3 importanceSampledSpecularAnisotropic(SurfaceBrdf surface, vec3 n, vec3 t, v
     // Only a mirror in both directions is one (strength 0 at roughness 0): as the isotropic one.
     if (alphas.x < 1e-4) {
         vec3 r = reflect(-v, n);
-        return brdfF(surface, NoV) * textureLod(uEnvironmentCube, toEnvironment(r), 0.0).rgb;
+        vec3 F = brdfF(surface, NoV);
+#if defined(IRIDESCENCE)
+        if (film.factor > 0.0) F = mix(F, thinFilmFresnel(film, NoV), film.factor);
+#endif
+        return F * textureLod(uEnvironmentCube, toEnvironment(r), 0.0).rgb;
     }
     // Below roughness 0.01 across the lobe its samples would all fall on a line; the floor
     // (the punctual lights' 0.045, alpha 0.002) keeps D finite and is narrower than a texel.
@@ -101,7 +118,11 @@ vec3 importanceSampledSpecularAnisotropic(SurfaceBrdf surface, vec3 n, vec3 t, v
         // f_s (n.l) / pdf = F V (n.l) 4 (v.h) / (n.h).
         float weight = V_SmithGGXCorrelatedAnisotropic(NoV, NoL, dot(t, v), dot(b, v), dot(t, l), dot(b, l), alphas.x, alphas.y) *
                        NoL * 4.0 * VoH / max(NoH, 1e-6);
-        sum += brdfF(surface, VoH) * weight * radiance;
+        vec3 F = brdfF(surface, VoH);
+#if defined(IRIDESCENCE)
+        if (film.factor > 0.0) F = mix(F, thinFilmFresnel(film, VoH), film.factor);
+#endif
+        sum += F * weight * radiance;
         float fc = brdfFresnelWeight(VoH);
         terms += weight * vec2(1.0 - fc, fc);
     }
@@ -109,3 +130,8 @@ vec3 importanceSampledSpecularAnisotropic(SurfaceBrdf surface, vec3 n, vec3 t, v
     return sum / float(IBL_IMPORTANCE_SAMPLES);
 }
 #endif
+
+vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float perceptualRoughness)
+{
+    return importanceSampledSpecular(surface, n, v, perceptualRoughness, noThinFilm());
+}

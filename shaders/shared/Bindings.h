@@ -46,6 +46,8 @@
 #define SPECULA_UNIT_SHEEN_ROUGHNESS 23
 #define SPECULA_UNIT_SHEEN_ALBEDO 27        // the sheen lobe's directional albedo E(n.v, roughness) (ibl/sheen_albedo.comp)
 #define SPECULA_UNIT_ANISOTROPY 24          // KHR_materials_anisotropy's texture (forward pass, ANISOTROPY variant)
+#define SPECULA_UNIT_IRIDESCENCE 25           // KHR_materials_iridescence's two textures (forward pass)
+#define SPECULA_UNIT_IRIDESCENCE_THICKNESS 26
 #define SPECULA_UNIT_SSAO 12             // forward pass: the blurred ambient occlusion
 #define SPECULA_BINDING_SSAO 5           // uniform buffer: SsaoData
 #define SPECULA_BINDING_EXPOSURE_PARAMS 6 // uniform buffer: ExposureParams

@@ -26,6 +26,7 @@ SPECULA_SHARED_BEGIN
 #define SPECULA_MATERIAL_DISPERSION 0x80000000u // KHR_materials_dispersion above 0 on a volume
 #define SPECULA_MATERIAL_SHEEN 8192u            // KHR_materials_sheen colour factor above 0
 #define SPECULA_MATERIAL_ANISOTROPY 16384u      // KHR_materials_anisotropy strength above 0 (GGX only)
+#define SPECULA_MATERIAL_IRIDESCENCE 32768u     // KHR_materials_iridescence factor above 0
 
 struct GpuMaterial {
     vec4 baseColorFactor;
@@ -50,10 +51,12 @@ struct GpuMaterial {
     vec4 sheen;           // KHR_materials_sheen: rgb sheenColorFactor (linear), a sheenRoughnessFactor (perceptual)
     vec4 anisotropy;      // KHR_materials_anisotropy: x anisotropyStrength, y cos, z sin of anisotropyRotation,
                           // w 1 with an anisotropyTexture (read at run time by the ANISOTROPY variant)
+    vec4 iridescence;     // KHR_materials_iridescence: x iridescenceFactor, y iridescenceIor,
+                          // z iridescenceThicknessMinimum, w iridescenceThicknessMaximum (nm)
 };
 
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::GpuMaterial) == 38 * 16);
+static_assert(sizeof(specula::shared::GpuMaterial) == 39 * 16);
 #endif

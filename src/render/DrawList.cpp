@@ -23,6 +23,8 @@ bool sampledByVariant(const MaterialBinding& m, TextureSlot slot)
     case TextureSlot::SheenColor:
     case TextureSlot::SheenRoughness: return m.sheen;
     case TextureSlot::Anisotropy: return m.anisotropy;
+    case TextureSlot::Iridescence:
+    case TextureSlot::IridescenceThickness: return m.iridescence;
     default: return true;
     }
 }

@@ -106,6 +106,8 @@ int textureUnit(TextureSlot slot)
     case TextureSlot::SheenColor: return SPECULA_UNIT_SHEEN_COLOR;
     case TextureSlot::SheenRoughness: return SPECULA_UNIT_SHEEN_ROUGHNESS;
     case TextureSlot::Anisotropy: return SPECULA_UNIT_ANISOTROPY;
+    case TextureSlot::Iridescence: return SPECULA_UNIT_IRIDESCENCE;
+    case TextureSlot::IridescenceThickness: return SPECULA_UNIT_IRIDESCENCE_THICKNESS;
     default: return int(slot);
     }
 }
@@ -216,6 +218,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         gpu.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughnessFactor);
         // The rotation as its cosine and sine: the shader turns the direction with them.
         gpu.anisotropy = glm::vec4(m.anisotropyStrength, std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), 0.0f);
+        gpu.iridescence = glm::vec4(m.iridescenceFactor, m.iridescenceIor, m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum);
         // Classic models' specular colour: mid grey, a plastic highlight (Phong 1975's ks).
         gpu.phong = glm::vec4(glm::vec3(0.5f), m.shininess);
         for (int slot = 0; slot < int(TextureSlot::Count); ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
@@ -245,6 +248,10 @@ GpuScene::GpuScene(const scene::Scene& scene)
             {m.sheenRoughnessTexture, TextureSlot::SheenRoughness, false, 0u},
             // Read only by the ANISOTROPY variant, where anisotropy.w says there is one (linear).
             {m.anisotropyTexture, TextureSlot::Anisotropy, false, 0u},
+            // Read only by the IRIDESCENCE variant, which samples both always (white without one:
+            // factor x 1, and the maximum thickness, as the extension says).
+            {m.iridescenceTexture, TextureSlot::Iridescence, false, 0u},
+            {m.iridescenceThicknessTexture, TextureSlot::IridescenceThickness, false, 0u},
         };
         for (const auto& s : slots) {
             if (!s.ref.valid()) continue;
@@ -273,6 +280,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
         // Strength 0 is the isotropic lobe (the texture's blue only scales it): no variant.
         binding.anisotropy = m.anisotropyStrength > 0.0f;
         if (binding.anisotropy) gpu.flags.x |= SPECULA_MATERIAL_ANISOTROPY;
+        binding.iridescence = m.iridescenceFactor > 0.0f;
+        if (binding.iridescence) gpu.flags.x |= SPECULA_MATERIAL_IRIDESCENCE;
         // The shading model and BRDF terms select the variant too (not read by the shaders).
         binding.features = gpu.flags.x | packShading(m.shading);
         gpuMaterials.push_back(gpu);
@@ -501,6 +510,7 @@ void GpuScene::setFeature(int material, uint32_t bit, bool on)
         binding.clearcoat = (binding.features & SPECULA_MATERIAL_CLEARCOAT) != 0;
         binding.sheen = (binding.features & SPECULA_MATERIAL_SHEEN) != 0;
         binding.anisotropy = (binding.features & SPECULA_MATERIAL_ANISOTROPY) != 0;
+        binding.iridescence = (binding.features & SPECULA_MATERIAL_IRIDESCENCE) != 0;
         mRecords[record].flags.x = (mRecords[record].flags.x & ~bit) | (binding.features & bit);
         mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
                                &mRecords[record].flags.x);

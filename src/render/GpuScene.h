@@ -37,6 +37,7 @@ enum class TextureSlot {
     Clearcoat, ClearcoatRoughness, ClearcoatNormal, ///< KHR_materials_clearcoat (CLEARCOAT variant only)
     SheenColor, SheenRoughness,                     ///< KHR_materials_sheen (SHEEN variant only)
     Anisotropy,                                     ///< KHR_materials_anisotropy (ANISOTROPY variant only)
+    Iridescence, IridescenceThickness,              ///< KHR_materials_iridescence (IRIDESCENCE variant only)
     Count
 };
 /// The texture unit of each slot (shaders/shared/Bindings.h): the first five are units 0-4.
@@ -51,6 +52,7 @@ struct MaterialBinding {
     bool clearcoat = false;    ///< KHR_materials_clearcoat: the CLEARCOAT variant, whose units 19-21 are bound
     bool sheen = false;        ///< KHR_materials_sheen: the SHEEN variant, whose units 22-23 are bound
     bool anisotropy = false;   ///< KHR_materials_anisotropy: the ANISOTROPY variant, whose unit 24 is bound
+    bool iridescence = false;  ///< KHR_materials_iridescence: the IRIDESCENCE variant, whose units 25-26 are bound
     uint32_t features = 0; ///< SPECULA_MATERIAL_* bits: selects the shader variant
 };
 
@@ -96,7 +98,8 @@ public:
     void setBlendMode(int material, scene::BlendMode mode);
     /// Sets or clears feature bit `bit` (a SPECULA_MATERIAL_* that selects a variant) of
     /// `material` and its copies, in the variant key and the uploaded record (a clearcoat of
-    /// factor 0, a black sheen, anisotropy of strength 0: the variant goes, and its textures).
+    /// factor 0, a black sheen, anisotropy of strength 0, a film of factor 0: the variant goes,
+    /// and its textures).
     void setFeature(int material, uint32_t bit, bool on);
     /// Writes `size` bytes at `offset` within `material`'s record (and its copies'), in the
     /// CPU copy and in the buffer: no other byte of the buffer is written.

@@ -204,7 +204,9 @@ struct Renderer::Impl {
 Renderer::Renderer() : mImpl(std::make_unique<Impl>())
 {
     // The forward pass binds units up to SPECULA_UNIT_SHEEN_ALBEDO (shaders/shared/Bindings.h).
-    static_assert(SPECULA_UNIT_SHEEN_ALBEDO > SPECULA_UNIT_ANISOTROPY && SPECULA_UNIT_ANISOTROPY > SPECULA_UNIT_SHEEN_ROUGHNESS &&
+    static_assert(SPECULA_UNIT_SHEEN_ALBEDO > SPECULA_UNIT_IRIDESCENCE_THICKNESS &&
+                  SPECULA_UNIT_IRIDESCENCE_THICKNESS > SPECULA_UNIT_IRIDESCENCE && SPECULA_UNIT_IRIDESCENCE > SPECULA_UNIT_ANISOTROPY &&
+                  SPECULA_UNIT_ANISOTROPY > SPECULA_UNIT_SHEEN_ROUGHNESS &&
                   SPECULA_UNIT_SHEEN_ROUGHNESS > SPECULA_UNIT_CLEARCOAT_NORMAL &&
                   SPECULA_UNIT_CLEARCOAT_NORMAL > SPECULA_UNIT_ENVIRONMENT_CUBE && SPECULA_UNIT_ENVIRONMENT_CUBE > SPECULA_UNIT_TRANSMISSION &&
                   SPECULA_UNIT_TRANSMISSION > SPECULA_UNIT_IRRADIANCE);
@@ -509,6 +511,9 @@ glm::vec4 Renderer::materialParameter(int material, MaterialParameter parameter)
     case MaterialParameter::SheenRoughness: return glm::vec4(r.sheen.w, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::AnisotropyStrength: return glm::vec4(r.anisotropy.x, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::AnisotropyRotation: return glm::vec4(std::atan2(r.anisotropy.z, r.anisotropy.y), 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::IridescenceFactor: return glm::vec4(r.iridescence.x, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::IridescenceIor: return glm::vec4(r.iridescence.y, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::IridescenceThickness: return glm::vec4(r.iridescence.z, r.iridescence.w, 0.0f, 0.0f);
     }
     return glm::vec4(0.0f);
 }
@@ -591,6 +596,22 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::AnisotropyRotation: {
         const glm::vec2 v(std::cos(value.x), std::sin(value.x)); // the record holds cos and sin
         gpu.writeMaterial(material, offsetof(GpuMaterial, anisotropy) + sizeof(float), 2 * sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::IridescenceFactor: {
+        const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, iridescence), sizeof(float), &v.x);
+        gpu.setFeature(material, SPECULA_MATERIAL_IRIDESCENCE, v.x > 0.0f);
+        break;
+    }
+    case MaterialParameter::IridescenceIor: {
+        const glm::vec4 v(std::max(value.x, 1.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, iridescence) + sizeof(float), sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::IridescenceThickness: {
+        const glm::vec4 v = glm::max(value, glm::vec4(0.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, iridescence) + 2 * sizeof(float), 2 * sizeof(float), &v.x);
         break;
     }
     }

@@ -51,8 +51,11 @@ enum class MaterialParameter {
     SheenRoughness,     ///< x, the sheen's perceptual roughness
     AnisotropyStrength, ///< x, KHR_materials_anisotropy strength (0 = isotropic: the ANISOTROPY variant goes)
     AnisotropyRotation, ///< x, radians counter-clockwise from the tangent
+    IridescenceFactor,    ///< x, KHR_materials_iridescence factor (0 = no film: the IRIDESCENCE variant goes)
+    IridescenceIor,       ///< x, the film's IOR (at least 1)
+    IridescenceThickness, ///< x minimum, y maximum thickness (nm, at least 0)
 };
-constexpr int kMaterialParameterCount = int(MaterialParameter::AnisotropyRotation) + 1;
+constexpr int kMaterialParameterCount = int(MaterialParameter::IridescenceThickness) + 1;
 
 /// How the specular lobe integrates image-based light (docs/ibl.md).
 enum class IblSpecular {

@@ -31,6 +31,7 @@ constexpr std::string_view kSupportedExtensions[] = {
     "KHR_materials_emissive_strength",
     "KHR_materials_sheen", // the sheen lobe (Material::sheen*)
     "KHR_materials_ior",      // F0 of the dielectric part (Material::ior)
+    "KHR_materials_iridescence", // the thin film (Material::iridescence*)
     "KHR_materials_specular", // factors; its textures are ignored
     "KHR_materials_transmission", // factor; its texture is ignored (docs/transparency.md)
     "KHR_materials_unlit",    // the unlit shading model (Material::shading)

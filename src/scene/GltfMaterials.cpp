@@ -348,6 +348,16 @@ void Importer::convertMaterials()
             material.anisotropyRotation = std::isfinite(rotation) ? float(std::remainder(rotation, 2.0 * 3.14159265358979323846)) : 0.0f;
             material.anisotropyTexture = extensionTexture(*anisotropy, "anisotropyTexture", where);
         }
+        // KHR_materials_iridescence: strength (R) and thickness (G) textures, the film's IOR and
+        // thickness range in nm (the minimum may exceed the maximum: the texture mixes them).
+        if (const tinygltf::Value* iridescence = extension(source.extensions, "KHR_materials_iridescence")) {
+            material.iridescenceFactor = float(std::clamp(number(*iridescence, "iridescenceFactor").value_or(0.0), 0.0, 1.0));
+            material.iridescenceIor = float(std::max(number(*iridescence, "iridescenceIor").value_or(1.3), 1.0));
+            material.iridescenceThicknessMinimum = float(std::max(number(*iridescence, "iridescenceThicknessMinimum").value_or(100.0), 0.0));
+            material.iridescenceThicknessMaximum = float(std::max(number(*iridescence, "iridescenceThicknessMaximum").value_or(400.0), 0.0));
+            material.iridescenceTexture = extensionTexture(*iridescence, "iridescenceTexture", where);
+            material.iridescenceThicknessTexture = extensionTexture(*iridescence, "iridescenceThicknessTexture", where);
+        }
         // KHR_materials_unlit: colour = the base colour term (factor × texture × vertex colour),
         // whatever the lights and the environment. The other PBR properties are only the fallback
         // of viewers without the extension (kept for --shading pbr), but emission is no part of

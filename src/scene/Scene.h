@@ -125,6 +125,16 @@ struct Material {
     float anisotropyStrength = 0.0f;
     float anisotropyRotation = 0.0f;
     TextureRef anisotropyTexture; ///< RG direction, B strength (linear)
+    /// KHR_materials_iridescence: a thin dielectric film of IOR iridescenceIor over the material
+    /// whose interference colours its Fresnel (0 = no film). Strength = the factor x
+    /// iridescenceTexture's R; thickness (nm) = mix(minimum, maximum, iridescenceThicknessTexture's
+    /// G), the maximum without that texture.
+    float iridescenceFactor = 0.0f;
+    float iridescenceIor = 1.3f;
+    float iridescenceThicknessMinimum = 100.0f;
+    float iridescenceThicknessMaximum = 400.0f;
+    TextureRef iridescenceTexture;          ///< R
+    TextureRef iridescenceThicknessTexture; ///< G
     /// Shading model and BRDF terms (scene files); unset ones come from the frame.
     MaterialShading shading;
     /// Index of refraction of the dielectric part (KHR_materials_ior): F0 = ((ior − 1)/(ior + 1))²

@@ -78,7 +78,8 @@ const std::vector<std::string_view> kMaterialKeys = {"name", "baseColor", "metal
                                                      "shininess", "sectorLight", "transmission", "thickness", "dispersion",
                                                      "attenuationDistance", "attenuationColor", "clearcoat",
                                                      "clearcoatRoughness", "sheenColor", "sheenRoughness",
-                                                     "anisotropyStrength", "anisotropyRotation"};
+                                                     "anisotropyStrength", "anisotropyRotation", "iridescence", "iridescenceIor",
+                                                     "iridescenceThicknessMinimum", "iridescenceThicknessMaximum"};
 
 /// Sets the material's fields that `object` gives; the others keep their values (a shape's
 /// defaults, or a glTF model's material with its textures).
@@ -123,6 +124,14 @@ void applyMaterialKeys(const Object& object, Material& material)
     // KHR_materials_anisotropy's factors (a glTF model's anisotropy texture stays).
     material.anisotropyStrength = object.unitInterval("anisotropyStrength").value_or(material.anisotropyStrength);
     material.anisotropyRotation = object.number("anisotropyRotation").value_or(material.anisotropyRotation);
+    // KHR_materials_iridescence's factor, film IOR and thickness range (a glTF model's textures stay).
+    material.iridescenceFactor = object.unitInterval("iridescence").value_or(material.iridescenceFactor);
+    if (const auto ior = object.number("iridescenceIor")) {
+        if (!(*ior >= 1.0f)) object.fail("iridescenceIor", "must be at least 1");
+        material.iridescenceIor = *ior;
+    }
+    material.iridescenceThicknessMinimum = object.nonNegative("iridescenceThicknessMinimum").value_or(material.iridescenceThicknessMinimum);
+    material.iridescenceThicknessMaximum = object.nonNegative("iridescenceThicknessMaximum").value_or(material.iridescenceThicknessMaximum);
     // Material system (docs/scene-format.md): shading model, BRDF terms, F0 from an IOR, Phong exponent.
     if (const auto v = object.choice("shading", {"pbr", "unlit", "flat", "gouraud", "phong", "blinn-phong", "doom"}))
         material.shading.model = parseShadingModel(*v);

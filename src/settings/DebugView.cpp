@@ -10,7 +10,7 @@ std::optional<DebugView> parseDebugView(std::string_view name)
     for (DebugView view : {DebugView::BaseColor, DebugView::Normal, DebugView::Roughness, DebugView::Metallic, DebugView::Occlusion,
                            DebugView::Emissive, DebugView::BrdfD, DebugView::BrdfG, DebugView::BrdfF, DebugView::Cascades,
                            DebugView::ShadowAtlas, DebugView::LightCount, DebugView::Sheen,
-                           DebugView::Anisotropy})
+                           DebugView::Anisotropy, DebugView::Iridescence, DebugView::Clearcoat, DebugView::ClearcoatNormal})
         if (name == debugViewName(view)) return view;
     return std::nullopt;
 }
@@ -35,6 +35,9 @@ const char* debugViewName(DebugView view)
     case DebugView::LightCount: return "light-count";
     case DebugView::Sheen: return "sheen";
     case DebugView::Anisotropy: return "anisotropy";
+    case DebugView::Iridescence: return "iridescence";
+    case DebugView::Clearcoat: return "clearcoat";
+    case DebugView::ClearcoatNormal: return "clearcoat-normal";
     }
     return "none";
 }

@@ -35,7 +35,19 @@ enum class DebugView {
     /// KHR_materials_anisotropy: the direction in the tangent frame, rotated, as RG = xy × 0.5 +
     /// 0.5 (the texture's own encoding), and the strength as B; (0.5, 0.5, 0) without anisotropy.
     Anisotropy,
+    /// The specular lobe's Fresnel at n·v (rgb): with KHR_materials_iridescence mix(F, the
+    /// film's thin-film Fresnel, factor), else F alone (shaders/forward/iridescence.glsl).
+    Iridescence,
+    /// KHR_materials_clearcoat: the layer's factor (R) and perceptual roughness (G), each × its
+    /// texture (B 0); black without a clearcoat.
+    Clearcoat,
+    /// KHR_materials_clearcoat: the layer's normal (its own normal map's, else the geometric
+    /// normal), n × 0.5 + 0.5 as `Normal`; black without a clearcoat.
+    ClearcoatNormal,
 };
+
+/// The last of DebugView's values (they run from 0 to it).
+constexpr DebugView kLastDebugView = DebugView::ClearcoatNormal;
 
 std::optional<DebugView> parseDebugView(std::string_view name);
 const char* debugViewName(DebugView view);

@@ -51,7 +51,7 @@ void applyMaterialOverrides(const scene::SceneDocument& document, const FrameOpt
         const auto view = parseDebugView(*options.debugView);
         if (!view)
             throw Error("unknown --debug-view '{}' (base-color, normal, roughness, metallic, occlusion, emissive, brdf-d, brdf-g, "
-                        "brdf-f, ssao, bloom, cascades, shadow-atlas, light-count, sheen, anisotropy)", *options.debugView);
+                        "brdf-f, ssao, bloom, cascades, shadow-atlas, light-count, sheen, anisotropy, iridescence, clearcoat, clearcoat-normal)", *options.debugView);
         s.debugView = *view;
     }
 }

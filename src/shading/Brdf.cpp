@@ -196,7 +196,8 @@ void evaluateLobes(const Surface& s, const dvec3& n, const dvec3& v, const dvec3
     const double NoV = std::abs(glm::dot(n, v));
     const double NoH = std::clamp(glm::dot(n, h), 0.0, 1.0);
     const double VoH = std::clamp(glm::dot(v, h), 0.0, 1.0);
-    const dvec3 f0 = glm::mix(glm::min(s.f0Dielectric * s.specularColor, dvec3(1.0)) * s.specularFactor, s.baseColor, s.metallic);
+    const dvec3 f0Dielectric = glm::min(s.f0Dielectric * s.specularColor, dvec3(1.0)) * s.specularFactor;
+    const dvec3 f0 = glm::mix(f0Dielectric, s.baseColor, s.metallic);
     const double f90 = s.specularFactor + (1.0 - s.specularFactor) * s.metallic;
     const dvec3 diffuseColor = s.baseColor * (1.0 - s.metallic);
     const dvec3 F = fresnel(s.fresnel, f0, f90, VoH);
@@ -204,15 +205,25 @@ void evaluateLobes(const Surface& s, const dvec3& n, const dvec3& v, const dvec3
     const double V = s.imageBased ? visibilityImageBased(s.geometry, NoV, NoL, NoH, VoH, r)
                                   : visibility(s.geometry, NoV, NoL, NoH, VoH, r);
     const double Fd = diffuseLobe(s.diffuse, r, NoV, NoL, VoH, glm::dot(v, l));
-    diffuse = (dvec3(1.0) - F) * diffuseColor * Fd;
-    specular = F * (D * V);
+    // The specular lobe's D V: KHR_materials_anisotropy's along its direction (GGX only).
+    double DV = D * V;
     if (s.anisotropy > 0.0 && s.distribution == Distribution::GGX) {
         const dvec3 t = glm::normalize(s.anisotropyDirection - n * glm::dot(n, s.anisotropyDirection));
         const dvec3 b = glm::cross(n, t);
         const double at = glm::mix(alpha, 1.0, s.anisotropy * s.anisotropy);
-        specular = F * (D_GGX_Anisotropic(NoH, glm::dot(t, h), glm::dot(b, h), at, alpha) *
-                        V_SmithGGXCorrelatedAnisotropic(NoV, NoL, glm::dot(t, v), glm::dot(b, v), glm::dot(t, l), glm::dot(b, l), at, alpha));
+        DV = D_GGX_Anisotropic(NoH, glm::dot(t, h), glm::dot(b, h), at, alpha) *
+             V_SmithGGXCorrelatedAnisotropic(NoV, NoL, glm::dot(t, v), glm::dot(b, v), glm::dot(t, l), glm::dot(b, l), at, alpha);
     }
+    // Its Fresnel and the diffuse lobe's weight: KHR_materials_iridescence's film mixed in.
+    dvec3 specularF = F, diffuseWeight = dvec3(1.0) - F;
+    if (s.iridescence.factor > 0.0) {
+        const dvec3 film = filmFresnel(s.iridescence, f0Dielectric, s.baseColor, s.metallic, VoH);
+        const double filmMax = std::max({film.r, film.g, film.b});
+        diffuseWeight = glm::mix(diffuseWeight, dvec3(std::max(1.0 - filmMax, 0.0)), s.iridescence.factor);
+        specularF = glm::mix(F, film, s.iridescence.factor);
+    }
+    diffuse = diffuseWeight * diffuseColor * Fd;
+    specular = specularF * DV;
     if (glm::any(glm::greaterThan(s.sheenColor, dvec3(0.0)))) {
         // The base gives up what the sheen reflects; a clearcoat (below) then lies over both.
         const double rs = std::clamp(s.sheenRoughness, kMinPerceptualRoughness, 1.0);

@@ -4,6 +4,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/MaterialModel.h"
+#include "shading/Iridescence.h"
 
 namespace specula::render::brdf {
 
@@ -79,6 +80,9 @@ struct Surface {
     /// anisotropyDirection (made orthogonal to n) and alpha_b = alpha across it.
     double anisotropy = 0.0;
     dvec3 anisotropyDirection{1.0, 0.0, 0.0};
+    /// KHR_materials_iridescence (shaders/forward/iridescence.glsl): F = mix(F, filmFresnel(v·h),
+    /// factor) in the specular lobe and the diffuse lobe weighted by mix(1 − F, 1 − max(film F), factor).
+    ThinFilm iridescence;
 };
 
 /// The "Charlie" sheen distribution and visibility (Estevez & Kulla 2017, as KHR_materials_sheen

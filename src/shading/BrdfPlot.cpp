@@ -61,8 +61,10 @@ BrdfCurves sampleBrdfCurves(const BrdfPlotMaterial& m, const ResolvedShading& sh
     surface.anisotropyDirection = glm::dvec3(1.0, 0.0, 0.0);
     if (anisotropic) surface.geometry = scene::BrdfGeometry::SmithGGXCorrelated;
     const double alpha = r * r, alphaT = glm::mix(alpha, 1.0, surface.anisotropy * surface.anisotropy);
+    surface.iridescence = {std::clamp(m.iridescence, 0.0, 1.0), std::max(m.iridescenceIor, 1.0), std::max(m.iridescenceThickness, 0.0)};
+    const glm::dvec3 f0Dielectric = glm::min(0.04 * m.specularColor, glm::dvec3(1.0)) * m.specularFactor;
     // The same F0 and F90 as brdf::evaluate and makeSurfaceBrdf in shaders/brdf/brdf.glsl.
-    const glm::dvec3 f0 = glm::mix(glm::min(0.04 * m.specularColor, glm::dvec3(1.0)) * m.specularFactor, m.baseColor, metallic);
+    const glm::dvec3 f0 = glm::mix(f0Dielectric, m.baseColor, metallic);
     const double f90 = m.specularFactor + (1.0 - m.specularFactor) * metallic;
     const glm::dvec3 kd = m.baseColor * (1.0 - metallic);
     const glm::dvec3 ks = glm::mix(m.phongSpecular, m.baseColor, metallic);
@@ -103,7 +105,13 @@ BrdfCurves sampleBrdfCurves(const BrdfPlotMaterial& m, const ResolvedShading& sh
             curves.d.push_back(float(brdf::distribution(shading.distribution, NoH, r * r)));
             curves.v.push_back(float(brdf::visibility(surface.geometry, NoV, NoL, NoH, VoH, r)));
         }
-        curves.f.push_back(luminance(brdf::fresnel(shading.fresnel, f0, f90, VoH)));
+        glm::dvec3 F = brdf::fresnel(shading.fresnel, f0, f90, VoH);
+        if (surface.iridescence.factor > 0.0)
+            F = glm::mix(F, brdf::filmFresnel(surface.iridescence, f0Dielectric, m.baseColor, metallic, VoH), surface.iridescence.factor);
+        curves.f.push_back(luminance(F));
+        curves.fRed.push_back(float(F.r));
+        curves.fGreen.push_back(float(F.g));
+        curves.fBlue.push_back(float(F.b));
         curves.whole.push_back(luminance(brdf::evaluate(surface, n, view, l)) * float(NoL));
         if (sheen && NoL > 0.0)
             curves.sheen.push_back(luminance(surface.sheenColor) *

@@ -28,6 +28,10 @@ struct BrdfPlotMaterial {
     double sheenRoughness = 0.0;
     /// KHR_materials_anisotropy strength (0 = isotropic); its direction is the plot's tangent.
     double anisotropy = 0.0;
+    /// KHR_materials_iridescence (0 = no film): the film at its maximum thickness (no textures).
+    double iridescence = 0.0;
+    double iridescenceIor = 1.3;
+    double iridescenceThickness = 400.0; ///< nm
 };
 
 /// What the curves show for a shading model.
@@ -46,7 +50,9 @@ struct BrdfCurves {
     /// Microfacet: D(n·h) of the chosen distribution. Classic: the specular lobe, (R·V)^n or (N·H)^n.
     std::vector<float> d;
     std::vector<float> v;     ///< Microfacet: V = G / (4 n·l n·v) of the chosen masking-shadowing term
-    std::vector<float> f;     ///< Microfacet: F(v·h) of the chosen Fresnel term
+    std::vector<float> f;     ///< Microfacet: F(v·h) of the chosen Fresnel term (with a film: mixed with its Fresnel)
+    /// Microfacet: F(v·h)'s red, green and blue apart (a film colours it: KHR_materials_iridescence).
+    std::vector<float> fRed, fGreen, fBlue;
     /// The reflected radiance per unit illuminance: f(l, v) × n·l with the chosen diffuse lobe
     /// (Microfacet, single scattering); (kd n·l + ks lobe) / π (Classic, brdf::evaluateClassic).
     std::vector<float> whole;

@@ -22,7 +22,7 @@ constexpr int kShadowFilterShift = 35, kShadowTapsShift = 37;
 // Material features above the first nine bits, and the transparency choices.
 constexpr uint64_t kBlendTransparent = uint64_t(1) << 39, kTransmission = uint64_t(1) << 40, kOit = uint64_t(1) << 41;
 constexpr uint64_t kClearcoat = uint64_t(1) << 42;
-constexpr uint64_t kSheen = uint64_t(1) << 43, kAnisotropy = uint64_t(1) << 44; // 45: iridescence's
+constexpr uint64_t kSheen = uint64_t(1) << 43, kAnisotropy = uint64_t(1) << 44, kIridescence = uint64_t(1) << 45;
 constexpr uint64_t kDispersion = uint64_t(1) << 46;
 // Bits 16-19 are free (the debug view's field was there while it had 4 bits).
 constexpr int kDebugShift = 47, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
@@ -72,6 +72,9 @@ constexpr std::array kTable = {
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::LightCount), "DEBUG_VIEW_LIGHT_COUNT", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::Sheen), "DEBUG_VIEW_SHEEN", K::DebugView},
     VariantDefine{kDebugMask, at(kDebugShift, DebugView::Anisotropy), "DEBUG_VIEW_ANISOTROPY", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::Iridescence), "DEBUG_VIEW_IRIDESCENCE", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::Clearcoat), "DEBUG_VIEW_CLEARCOAT", K::DebugView},
+    VariantDefine{kDebugMask, at(kDebugShift, DebugView::ClearcoatNormal), "DEBUG_VIEW_CLEARCOAT_NORMAL", K::DebugView},
     VariantDefine{kIbl, kIbl, "IBL", K::FrameFeature},
     VariantDefine{kIblImportance, kIblImportance, "IBL_IMPORTANCE", K::FrameFeature},
     VariantDefine{kEnergyCompensation, kEnergyCompensation, "ENERGY_COMPENSATION", K::FrameFeature},
@@ -102,11 +105,12 @@ constexpr std::array kTable = {
     VariantDefine{kDispersion, kDispersion, "DISPERSION", K::MaterialFeature},
     VariantDefine{kSheen, kSheen, "SHEEN", K::MaterialFeature},
     VariantDefine{kAnisotropy, kAnisotropy, "ANISOTROPY", K::MaterialFeature},
+    VariantDefine{kIridescence, kIridescence, "IRIDESCENCE", K::MaterialFeature},
     VariantDefine{kOit, kOit, "OIT", K::FrameFeature},
 };
 static_assert((kFeatureMask & (kIbl | kIblImportance | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
-static_assert(uint64_t(DebugView::Anisotropy) < (uint64_t(1) << 5)); // the debug field's 5 bits
-static_assert((kDebugMask & (kBlendTransparent | kTransmission | kOit | kClearcoat | kSheen | kAnisotropy | kDispersion)) == 0);
+static_assert(uint64_t(kLastDebugView) < (uint64_t(1) << 5)); // the debug field's 5 bits
+static_assert((kDebugMask & (kBlendTransparent | kTransmission | kOit | kClearcoat | kSheen | kAnisotropy | kIridescence | kDispersion)) == 0);
 static_assert(((kShadowTapsMask | kShadowFilterMask) & (kBlendTransparent | kTransmission | kOit)) == 0);
 static_assert((kDiffuseMask & (kShadowDirectional | kShadowSpot | kShadowPoint | kShadowFilterMask | kShadowTapsMask)) == 0);
 
@@ -139,14 +143,19 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
             // KHR_materials_dispersion: three refractions, one per channel, where a volume has it.
             if (features & SPECULA_MATERIAL_DISPERSION) key |= kDispersion;
         }
-        // KHR_materials_clearcoat: the layer, in the lit frame only.
-        if ((features & SPECULA_MATERIAL_CLEARCOAT) && !doomIndexed && !isMaterialDebugView(debugView)) key |= kClearcoat;
+        // KHR_materials_clearcoat: the layer, in the lit frame and in its own debug views.
+        const bool coatView = debugView == DebugView::Clearcoat || debugView == DebugView::ClearcoatNormal;
+        if ((features & SPECULA_MATERIAL_CLEARCOAT) && !doomIndexed && (!isMaterialDebugView(debugView) || coatView)) key |= kClearcoat;
         // KHR_materials_sheen: the lobe in the lit frame, and its own debug view.
         if ((features & SPECULA_MATERIAL_SHEEN) && !doomIndexed && (!isMaterialDebugView(debugView) || debugView == DebugView::Sheen))
             key |= kSheen;
         // KHR_materials_anisotropy: the GGX lobe only (other D terms stay isotropic); the
         // debug views keep it, for the anisotropy view and the anisotropic D.
         if ((features & SPECULA_MATERIAL_ANISOTROPY) && anisotropic(shading) && !doomIndexed) key |= kAnisotropy;
+        // KHR_materials_iridescence: the film, in the lit frame and in its own debug view.
+        if ((features & SPECULA_MATERIAL_IRIDESCENCE) && !doomIndexed &&
+            (!isMaterialDebugView(debugView) || debugView == DebugView::Iridescence))
+            key |= kIridescence;
     }
     // OIT's accumulation is for the blended list only (transmissive draws, blended or not, are
     // drawn sorted before it), and never in an indexed frame.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 namespace specula::test {
 namespace {
@@ -13,19 +14,6 @@ double luminance(const dvec3& c)
 {
     return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
 }
-
-// SplitMix64 (Steele et al. 2014): independent streams from consecutive seeds.
-struct Random {
-    uint64_t state;
-    double next()
-    {
-        uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        z ^= z >> 31;
-        return double(z >> 11) * (1.0 / 9007199254740992.0);
-    }
-};
 
 // Index of the interval of `cdf` (ascending, 0 .. 1) holding u.
 size_t findInterval(const double* cdf, size_t intervals, double u)
@@ -214,6 +202,17 @@ ReferenceSample referenceRadiance(const render::brdf::Surface& surface, const gl
     const double l = luminance(out.radiance);
     out.relativeError = l > 0.0 ? std::sqrt(variance) / l : 0.0;
     return out;
+}
+
+void parallelFor(size_t count, const std::function<void(size_t)>& f)
+{
+    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::thread> workers;
+    for (unsigned t = 0; t < threads; ++t)
+        workers.emplace_back([&, t] {
+            for (size_t k = t; k < count; k += threads) f(k);
+        });
+    for (std::thread& w : workers) w.join();
 }
 
 } // namespace specula::test

@@ -9,7 +9,9 @@
 //     vectors and cosine-weighted directions) and of the map (texels by luminance × solid
 //     angle, then uniform in φ and cos θ within the texel).
 // Nothing of the GPU's bake enters it: it is what the image-based lighting approximates.
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -18,6 +20,23 @@
 #include "shading/EnvironmentMap.h"
 
 namespace specula::test {
+
+/// SplitMix64 (Steele et al. 2014): uniform doubles in [0, 1); independent streams from
+/// consecutive seeds, so each pixel's estimate is reproducible whatever thread computes it.
+struct Random {
+    uint64_t state;
+    double next()
+    {
+        uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        z ^= z >> 31;
+        return double(z >> 11) * (1.0 / 9007199254740992.0);
+    }
+};
+
+/// f(0) .. f(count - 1) on every core (interleaved: item k on thread k mod threads).
+void parallelFor(size_t count, const std::function<void(size_t)>& f);
 
 /// Directions distributed as the map's luminance, with their solid-angle pdf.
 class EnvironmentSampler {

@@ -16,7 +16,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "render/Renderer.h"
@@ -348,25 +347,19 @@ TEST_F(GlTest, AnisotropyImageBasedLightAgainstAMonteCarloReference)
             if (test::sphereNormal(x, y, n) && std::abs(n.y) < 0.95f) pixels.push_back({x, y, dvec3(n)});
         }
     std::vector<test::ReferenceSample> reference(size_t(count) * pixels.size());
-    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    std::vector<std::thread> workers;
-    for (unsigned t = 0; t < threads; ++t)
-        workers.emplace_back([&, t] {
-            for (size_t k = t; k < reference.size(); k += threads) {
-                const int i = int(k / pixels.size());
-                const Pixel& p = pixels[k % pixels.size()];
-                render::brdf::Surface surface;
-                surface.baseColor = dvec3(spheres[i].baseColor);
-                surface.metallic = spheres[i].metallic;
-                surface.perceptualRoughness = spheres[i].roughness;
-                surface.anisotropy = spheres[i].strength;
-                surface.anisotropyDirection = sphereDirection(p.n, 0.0);
-                // The renderer's anisotropic lobe has the height-correlated V (docs/materials.md).
-                surface.geometry = render::brdf::Geometry::SmithGGXCorrelated;
-                reference[k] = test::referenceRadiance(surface, p.n, test::viewVector(i, count, p.n), map, sampler, dvec3(1.0), 1024, k);
-            }
-        });
-    for (std::thread& w : workers) w.join();
+    test::parallelFor(reference.size(), [&](size_t k) {
+        const int i = int(k / pixels.size());
+        const Pixel& p = pixels[k % pixels.size()];
+        render::brdf::Surface surface;
+        surface.baseColor = dvec3(spheres[i].baseColor);
+        surface.metallic = spheres[i].metallic;
+        surface.perceptualRoughness = spheres[i].roughness;
+        surface.anisotropy = spheres[i].strength;
+        surface.anisotropyDirection = sphereDirection(p.n, 0.0);
+        // The renderer's anisotropic lobe has the height-correlated V (docs/materials.md).
+        surface.geometry = render::brdf::Geometry::SmithGGXCorrelated;
+        reference[k] = test::referenceRadiance(surface, p.n, test::viewVector(i, count, p.n), map, sampler, dvec3(1.0), 1024, k);
+    });
 
     for (render::IblSpecular mode : {render::IblSpecular::SplitSum, render::IblSpecular::Importance}) {
         render::FrameSettings settings;

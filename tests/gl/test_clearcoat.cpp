@@ -334,3 +334,45 @@ TEST_F(GlTest, ClearcoatWhiteFurnace)
     std::printf("clearcoat furnace, %s: highest reflected fraction %.4f\n", render::iblSpecularName(mode), highest);
     }
 }
+
+TEST_F(GlTest, ClearcoatDebugViewsShowTheLayersFactorRoughnessAndNormal)
+{
+    // --debug-view clearcoat and clearcoat-normal on tests/assets/gltf/clearcoat_quad.gltf: the
+    // factor 1 x R 204/255 and roughness 0.5 x G 128/255 (B 0), and the layer's normal from its
+    // constant texel (171, 128, 247) at scale 0.8 in the quad's tangent frame (the world axes),
+    // n x 0.5 + 0.5; each written sRGB-decoded (the output's value x 255). The same quad without
+    // a layer is black in both. Within 0.004 (half floats).
+    const std::string file = std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/clearcoat_quad.gltf";
+    dvec3 tn = dvec3(171.0, 128.0, 247.0) / 255.0 * 2.0 - 1.0;
+    tn.x *= 0.8;
+    tn.y *= 0.8;
+    const dvec3 layerNormal = glm::normalize(tn) * 0.5 + 0.5;
+    const dvec3 layer(204.0 / 255.0, 0.5 * 128.0 / 255.0, 0.0);
+    constexpr int kSize = 64;
+    const glm::vec3 eye(0.0f, 0.0f, 3.0f);
+    const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(45.0f), 1.0f, 0.1f, 20.0f);
+    auto toValue = [](double linear) { return linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055; };
+    for (DebugView debugView : {DebugView::Clearcoat, DebugView::ClearcoatNormal}) {
+        SCOPED_TRACE(debugViewName(debugView));
+        for (bool coated : {true, false}) {
+            scene::Scene s = scene::loadGltf(file);
+            if (!coated) s.materials.at(0).clearcoatFactor = 0.0f;
+            render::Renderer renderer;
+            renderer.setScene(s);
+            render::FrameSettings settings = frameSettings(kSize);
+            settings.debugView = debugView;
+            renderer.render(view, settings);
+            const ImageFloat image = renderer.readRadiance();
+            const dvec3 expected = !coated ? dvec3(0.0) : debugView == DebugView::Clearcoat ? layer : layerNormal;
+            int tested = 0;
+            for (int y = 8; y < kSize - 8; ++y)
+                for (int x = 8; x < kSize - 8; ++x) {
+                    ++tested;
+                    for (int ch = 0; ch < 3; ++ch)
+                        EXPECT_NEAR(toValue(image.pixels[(size_t(y) * kSize + x) * 4 + ch]), expected[ch], 0.004)
+                            << (coated ? "coated" : "bare") << " pixel (" << x << ", " << y << ") channel " << ch;
+                }
+            EXPECT_EQ(tested, 48 * 48);
+        }
+    }
+}

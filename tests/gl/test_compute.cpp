@@ -1,6 +1,7 @@
 // Compute programs through the same loader: a shader writes its invocation ids to an image.
 #include "GlTestContext.h"
 
+#include <unistd.h>
 #include <epoxy/gl.h>
 
 #include <filesystem>
@@ -15,7 +16,7 @@ using specula::test::GlTest;
 TEST_F(GlTest, ComputeProgramWritesAnImage)
 {
     namespace fs = std::filesystem;
-    const fs::path root = fs::temp_directory_path() / "specula-compute-test";
+    const fs::path root = fs::temp_directory_path() / ("specula-compute-test-" + std::to_string(::getpid()));
     fs::create_directories(root);
     std::ofstream(root / "ids.comp") << "#version 450 core\n"
                                         "layout(local_size_x = 8, local_size_y = 8) in;\n"

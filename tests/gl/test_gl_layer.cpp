@@ -2,6 +2,7 @@
 // framebuffers, programs and their error messages, timer queries.
 #include "GlTestContext.h"
 
+#include <unistd.h>
 #include <epoxy/gl.h>
 
 #include <cstring>
@@ -190,7 +191,7 @@ TEST_F(GlTest, FramebufferWithFloatTargetsClearsAndReports)
 TEST_F(GlTest, ProgramErrorsNameFileAndLine)
 {
     namespace fs = std::filesystem;
-    const fs::path root = fs::temp_directory_path() / "specula-program-test";
+    const fs::path root = fs::temp_directory_path() / ("specula-program-test-" + std::to_string(::getpid()));
     fs::create_directories(root / "lib");
     std::ofstream(root / "lib/broken.glsl") << "float ok() { return 1.0; }\nfloat bad() { return undefinedThing; }\n";
     std::ofstream(root / "test.vert") << "#version 450 core\nvoid main() { gl_Position = vec4(0.0); }\n";

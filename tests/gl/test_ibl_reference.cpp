@@ -19,7 +19,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -139,22 +138,16 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
             }
             // The reference, once per sphere and pixel, on every core.
             std::vector<ReferenceSample> reference(size_t(kSpheres) * pixels.size());
-            const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-            std::vector<std::thread> workers;
-            for (unsigned t = 0; t < threads; ++t)
-                workers.emplace_back([&, t] {
-                    for (size_t k = t; k < reference.size(); k += threads) {
-                        const int s = int(k / pixels.size());
-                        const Pixel& p = pixels[k % pixels.size()];
-                        const glm::dvec3 v = viewVector(s, kSpheres, p.n);
-                        const render::brdf::Surface surface = cpuSurface(metal, kRoughnesses[s]);
-                        const double e = kRoughnesses[s] == 0.0f ? 1.0 : albedo[size_t(s)].at(glm::dot(p.n, v));
-                        const glm::dvec3 f0 = glm::mix(glm::dvec3(0.04), surface.baseColor, surface.metallic);
-                        const glm::dvec3 compensation = glm::dvec3(1.0) + f0 * (1.0 / e - 1.0);
-                        reference[k] = referenceRadiance(surface, p.n, v, map, sampler, compensation, samples, k);
-                    }
-                });
-            for (std::thread& w : workers) w.join();
+            test::parallelFor(reference.size(), [&](size_t k) {
+                const int s = int(k / pixels.size());
+                const Pixel& p = pixels[k % pixels.size()];
+                const glm::dvec3 v = viewVector(s, kSpheres, p.n);
+                const render::brdf::Surface surface = cpuSurface(metal, kRoughnesses[s]);
+                const double e = kRoughnesses[s] == 0.0f ? 1.0 : albedo[size_t(s)].at(glm::dot(p.n, v));
+                const glm::dvec3 f0 = glm::mix(glm::dvec3(0.04), surface.baseColor, surface.metallic);
+                const glm::dvec3 compensation = glm::dvec3(1.0) + f0 * (1.0 / e - 1.0);
+                reference[k] = referenceRadiance(surface, p.n, v, map, sampler, compensation, samples, k);
+            });
 
             for (render::IblSpecular mode : {render::IblSpecular::SplitSum, render::IblSpecular::Importance}) {
                 render::FrameSettings settings;

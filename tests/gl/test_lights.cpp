@@ -4,6 +4,7 @@
 // thousand reaches the shading of every reflection model.
 #include "GlTestContext.h"
 
+#include <unistd.h>
 #include <epoxy/gl.h>
 
 #include <cmath>
@@ -140,7 +141,7 @@ namespace {
 gl::Program lightReader(bool storage)
 {
     namespace fs = std::filesystem;
-    const fs::path root = fs::temp_directory_path() / "specula-light-reader";
+    const fs::path root = fs::temp_directory_path() / ("specula-light-reader-" + std::to_string(::getpid()));
     fs::remove_all(root);
     fs::copy(gl::shaderRoot(), root, fs::copy_options::recursive);
     std::ofstream(root / "lights" / "read_lights.comp")

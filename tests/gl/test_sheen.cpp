@@ -21,7 +21,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -102,13 +101,7 @@ struct SheenAlbedo {
     std::vector<double> e;
     explicit SheenAlbedo(double roughness, int entries = 48) : e(size_t(entries))
     {
-        std::vector<std::thread> workers;
-        const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-        for (unsigned t = 0; t < threads; ++t)
-            workers.emplace_back([&, t] {
-                for (size_t i = t; i < e.size(); i += threads) e[i] = sheenAlbedoQuadrature((double(i) + 0.5) / double(e.size()), roughness);
-            });
-        for (std::thread& w : workers) w.join();
+        test::parallelFor(e.size(), [&](size_t i) { e[i] = sheenAlbedoQuadrature((double(i) + 0.5) / double(e.size()), roughness); });
     }
     double at(double NoV) const
     {
@@ -263,17 +256,6 @@ Comparison compareSphere(const char* name, const Sheened& c, const glm::vec3& li
     return result;
 }
 
-/// A small deterministic generator for the Monte Carlo estimate (SplitMix64).
-struct Random {
-    uint64_t state;
-    double next()
-    {
-        uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-    }
-};
 
 /// integral of f_sheen (colour 1) L(l) (n.l) over the hemisphere of n, by multiple importance
 /// sampling (balance heuristic) of cosine-weighted directions and of the map's texels.
@@ -287,7 +269,7 @@ dvec3 sheenMonteCarlo(const dvec3& n, const dvec3& v, double roughness, const re
         const double NoL = glm::dot(n, l);
         return sheenLobe(NoV, NoL, std::clamp(glm::dot(n, glm::normalize(v + l)), 0.0, 1.0), roughness) * NoL;
     };
-    Random random{seed * 0x2545f4914f6cdd1dull + 7};
+    test::Random random{seed * 0x2545f4914f6cdd1dull + 7};
     dvec3 sum(0.0);
     for (int i = 0; i < samples; ++i) {
         {
@@ -498,18 +480,12 @@ TEST_F(GlTest, SheenImageBasedLightMatchesAMonteCarloReference)
         const render::EnvironmentMap map = render::loadEnvironmentMap(file);
         const test::EnvironmentSampler sampler(map);
         std::vector<dvec3> reference(size_t(count) * pixels.size());
-        const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-        std::vector<std::thread> workers;
-        for (unsigned t = 0; t < threads; ++t)
-            workers.emplace_back([&, t] {
-                for (size_t k = t; k < reference.size(); k += threads) {
-                    const int s = int(k / pixels.size());
-                    const Pixel& p = pixels[k % pixels.size()];
-                    reference[k] = color * sheenMonteCarlo(p.n, test::viewVector(s, count, p.n), roughnesses[size_t(s)], map, sampler,
-                                                           samples, k + 1);
-                }
-            });
-        for (std::thread& w : workers) w.join();
+        test::parallelFor(reference.size(), [&](size_t k) {
+            const int s = int(k / pixels.size());
+            const Pixel& p = pixels[k % pixels.size()];
+            reference[k] = color * sheenMonteCarlo(p.n, test::viewVector(s, count, p.n), roughnesses[size_t(s)], map, sampler,
+                                                   samples, k + 1);
+        });
 
         render::Renderer renderer;
         renderer.setEnvironment(map);

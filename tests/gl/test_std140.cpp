@@ -57,7 +57,8 @@ TEST_F(GlTest, SharedStructsMatchGlslLayout)
     EXPECT_EQ(memberOffset(id, GL_UNIFORM, "material.params"), GLint(offsetof(GpuMaterial, params)));
     EXPECT_EQ(memberOffset(id, GL_UNIFORM, "material.flags"), GLint(offsetof(GpuMaterial, flags)));
     EXPECT_EQ(memberOffset(id, GL_UNIFORM, "material.uvTransform[0]"), GLint(offsetof(GpuMaterial, uvTransform)));
-    // The clearcoat variant reads the record's last vec4 and the last texture's transform.
+    // The clearcoat variant reads the record's clearcoat vec4, the iridescence variant its last
+    // vec4 and the last texture's transform.
     const gl::Program coated({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = {"CLEARCOAT"}});
     EXPECT_EQ(blockSize(coated.id(), GL_UNIFORM_BLOCK, "MaterialBlock"), GLint(sizeof(GpuMaterial)));
     EXPECT_EQ(memberOffset(coated.id(), GL_UNIFORM, "material.clearcoat"), GLint(offsetof(GpuMaterial, clearcoat)));
@@ -68,6 +69,9 @@ TEST_F(GlTest, SharedStructsMatchGlslLayout)
     const gl::Program brushed({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = {"ANISOTROPY"}});
     EXPECT_EQ(blockSize(brushed.id(), GL_UNIFORM_BLOCK, "MaterialBlock"), GLint(sizeof(GpuMaterial)));
     EXPECT_EQ(memberOffset(brushed.id(), GL_UNIFORM, "material.anisotropy"), GLint(offsetof(GpuMaterial, anisotropy)));
+    const gl::Program filmed({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = {"IRIDESCENCE"}});
+    EXPECT_EQ(blockSize(filmed.id(), GL_UNIFORM_BLOCK, "MaterialBlock"), GLint(sizeof(GpuMaterial)));
+    EXPECT_EQ(memberOffset(filmed.id(), GL_UNIFORM, "material.iridescence"), GLint(offsetof(GpuMaterial, iridescence)));
 }
 
 TEST_F(GlTest, PostStructsMatchGlslLayout)

@@ -225,3 +225,30 @@ TEST(BrdfPlot, AnisotropyPlotsAlongAndAcrossTheTangent)
         EXPECT_NEAR(c.whole[k], luminance(render::brdf::evaluate(s, a.n, a.v, a.l)) * a.NoL, 1e-6) << k;
     }
 }
+
+TEST(BrdfPlot, FresnelCurveCarriesTheIridescentFilm)
+{
+    // KHR_materials_iridescence: F = mix(Schlick, the film's F_iridescence(v.h), factor) in each
+    // channel (shading/Iridescence.h), its luminance in f; the whole BRDF uses the same F. The
+    // film colours F (red and blue apart from Schlick's) more than it changes its luminance.
+    render::BrdfPlotMaterial m = plastic();
+    m.iridescence = 0.9;
+    m.iridescenceIor = 1.8;
+    m.iridescenceThickness = 500.0;
+    const BrdfCurves c = render::sampleBrdfCurves(m, ResolvedShading{}, kView, kSamples);
+    const BrdfCurves plain = render::sampleBrdfCurves(plastic(), ResolvedShading{}, kView, kSamples);
+    const render::brdf::ThinFilm film{0.9, 1.8, 500.0};
+    double differs = 0.0;
+    for (size_t k = 0; k < c.f.size(); ++k) {
+        const Angles a = anglesAt(c, k);
+        const glm::dvec3 expected = glm::mix(render::brdf::F_Schlick(glm::dvec3(0.04), a.VoH),
+                                             render::brdf::filmFresnel(film, glm::dvec3(0.04), m.baseColor, 0.0, a.VoH), 0.9);
+        EXPECT_NEAR(c.fRed[k], expected.r, 1e-6);
+        EXPECT_NEAR(c.fGreen[k], expected.g, 1e-6);
+        EXPECT_NEAR(c.fBlue[k], expected.b, 1e-6);
+        EXPECT_NEAR(c.f[k], luminance(expected), 1e-6);
+        differs = std::max({differs, std::abs(double(c.fRed[k]) - plain.fRed[k]), std::abs(double(c.fBlue[k]) - plain.fBlue[k])});
+    }
+    EXPECT_GT(differs, 0.01);
+    EXPECT_GT(relativeDifference(c.whole, plain.whole), 0.01);
+}

@@ -1,6 +1,7 @@
 // Every shader, and the variants the renderer builds, validated offline by glslangValidator
 // (Khronos' reference front end), independently of the driver: Mesa and NVIDIA each accept
 // things the specification does not.
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -81,7 +82,7 @@ std::vector<Variant> variants()
 TEST(Glslang, EveryShaderVariantValidates)
 {
     ASSERT_EQ(std::system("command -v glslangValidator >/dev/null"), 0) << "glslangValidator missing (Debian: glslang-tools)";
-    const fs::path dir = fs::temp_directory_path() / "specula-glslang";
+    const fs::path dir = fs::temp_directory_path() / ("specula-glslang-" + std::to_string(::getpid()));
     fs::create_directories(dir);
     int index = 0;
     for (const Variant& v : variants()) {

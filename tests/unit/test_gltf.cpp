@@ -1528,6 +1528,55 @@ TEST(GltfExtensions, ClearcoatFieldsAndTextures)
     EXPECT_FALSE(m.normalTexture.valid());
 }
 
+// tests/assets/gltf/iridescence_quad.gltf (make_iridescence.py; the Khronos validator: 0 errors,
+// 0 warnings, 0 infos): every KHR_materials_iridescence field and texture, the thickness
+// texture's texCoord and KHR_texture_transform, no warning for the extension.
+TEST(GltfExtensions, IridescenceFieldsAndTextures)
+{
+    const Scene scene = loadGltf(kTestAssets / "iridescence_quad.gltf");
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    ASSERT_EQ(scene.materials.size(), 1u);
+    const Material& m = scene.materials[0];
+    EXPECT_FLOAT_EQ(m.iridescenceFactor, 1.0f);
+    EXPECT_FLOAT_EQ(m.iridescenceIor, 1.6f);
+    EXPECT_FLOAT_EQ(m.iridescenceThicknessMinimum, 100.0f);
+    EXPECT_FLOAT_EQ(m.iridescenceThicknessMaximum, 700.0f);
+    ASSERT_TRUE(m.iridescenceTexture.valid());
+    ASSERT_TRUE(m.iridescenceThicknessTexture.valid());
+    EXPECT_EQ(m.iridescenceTexture.image, 0);
+    EXPECT_EQ(m.iridescenceThicknessTexture.image, 1);
+    EXPECT_EQ(m.iridescenceThicknessTexture.texCoord, 0);
+    EXPECT_EQ(m.iridescenceThicknessTexture.transform.offset, glm::vec2(1.0f, 0.0f));
+    EXPECT_EQ(m.iridescenceThicknessTexture.transform.scale, glm::vec2(-1.0f, 1.0f));
+    EXPECT_EQ(scene.images.at(0).pixels[0], 230);
+    const Image& thickness = scene.images.at(1);
+    ASSERT_EQ(thickness.pixels.size(), 16u); // 2 x 2 RGBA
+    EXPECT_EQ(thickness.pixels[1], 0);
+    EXPECT_EQ(thickness.pixels[4 + 1], 85);
+    EXPECT_EQ(thickness.pixels[8 + 1], 170);
+    EXPECT_EQ(thickness.pixels[12 + 1], 255);
+}
+
+TEST(GltfExtensions, IridescenceDefaults)
+{
+    // The extension's defaults: factor 0 (no film), IOR 1.3, thickness 100 to 400 nm.
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}});
+    b.doc["materials"] = {{{"extensions", {{"KHR_materials_iridescence", json::object()}}}}};
+    b.doc["extensionsUsed"] = json::array({"KHR_materials_iridescence"});
+    b.doc["extensionsRequired"] = json::array({"KHR_materials_iridescence"});
+    const Scene scene = loadGltf(b.write(dir, "film.gltf"));
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    const Material& m = scene.materials.at(0);
+    EXPECT_EQ(m.iridescenceFactor, 0.0f);
+    EXPECT_FLOAT_EQ(m.iridescenceIor, 1.3f);
+    EXPECT_FLOAT_EQ(m.iridescenceThicknessMinimum, 100.0f);
+    EXPECT_FLOAT_EQ(m.iridescenceThicknessMaximum, 400.0f);
+    EXPECT_FALSE(m.iridescenceTexture.valid());
+    EXPECT_FALSE(m.iridescenceThicknessTexture.valid());
+}
+
 TEST(GltfExtensions, ClearcoatDefaultsTexCoordAndTransform)
 {
     // Defaults of the extension (factor 0, roughness 0, scale 1), a texture's texCoord and its

@@ -187,6 +187,33 @@ TEST(SceneFileMaterials, Anisotropy)
     EXPECT_NE(error(R"({"anisotropyRotation": "north"})").find("anisotropyRotation"), std::string::npos);
 }
 
+// KHR_materials_iridescence's factor, film IOR and thickness range in a scene file
+// (docs/scene-format.md), their defaults (1.3, 100 nm, 400 nm) and their range errors.
+TEST(SceneFileMaterials, Iridescence)
+{
+    const SceneDocument d = test::loadSceneText(R"({"shapes": [
+        {"type": "sphere", "material": {"iridescence": 0.5, "iridescenceIor": 1.8, "iridescenceThicknessMinimum": 50,
+                                        "iridescenceThicknessMaximum": 900}},
+        {"type": "sphere", "material": {}}]})");
+    ASSERT_EQ(d.scene.materials.size(), 2u);
+    const Material& m = d.scene.materials[0];
+    EXPECT_FLOAT_EQ(m.iridescenceFactor, 0.5f);
+    EXPECT_FLOAT_EQ(m.iridescenceIor, 1.8f);
+    EXPECT_FLOAT_EQ(m.iridescenceThicknessMinimum, 50.0f);
+    EXPECT_FLOAT_EQ(m.iridescenceThicknessMaximum, 900.0f);
+    const Material& plain = d.scene.materials[1];
+    EXPECT_EQ(plain.iridescenceFactor, 0.0f); // no film by default
+    EXPECT_FLOAT_EQ(plain.iridescenceIor, 1.3f);
+    EXPECT_FLOAT_EQ(plain.iridescenceThicknessMinimum, 100.0f);
+    EXPECT_FLOAT_EQ(plain.iridescenceThicknessMaximum, 400.0f);
+    auto error = [](const std::string& material) {
+        return test::sceneError(R"({"shapes": [{"type": "sphere", "material": )" + material + "}]}");
+    };
+    EXPECT_NE(error(R"({"iridescence": 1.5})").find("iridescence"), std::string::npos);
+    EXPECT_NE(error(R"({"iridescenceIor": 0.9})").find("iridescenceIor"), std::string::npos);
+    EXPECT_NE(error(R"({"iridescenceThicknessMaximum": -1})").find("iridescenceThicknessMaximum"), std::string::npos);
+}
+
 // The transmission golden's scene file (tests/assets/transparency/transmission.json) loads.
 TEST(SceneFileMaterials, TransmissionSceneLoads)
 {

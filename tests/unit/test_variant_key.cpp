@@ -116,3 +116,52 @@ TEST(VariantKey, AnisotropyOnlyForAnisotropicGgxMaterials)
     EXPECT_NE(std::find(debug.begin(), debug.end(), "ANISOTROPY"), debug.end());
     EXPECT_NE(std::find(debug.begin(), debug.end(), "DEBUG_VIEW_ANISOTROPY"), debug.end());
 }
+
+TEST(VariantKey, IridescenceOnlyForFilmedMaterialsInTheLitFrameAndItsOwnView)
+{
+    // KHR_materials_iridescence: a material without a film pays nothing (no define); with one,
+    // the lit frame and DebugView::Iridescence get IRIDESCENCE, other material views and a Doom
+    // frame's indices do not.
+    const auto make = [](uint32_t features, DebugView d, bool doom = false) {
+        return ForwardVariant::make(features, {}, d, IblVariant::None, false, false, doom).defines();
+    };
+    const auto has = [](const std::vector<std::string>& defines) {
+        return std::find(defines.begin(), defines.end(), "IRIDESCENCE") != defines.end();
+    };
+    EXPECT_FALSE(has(make(0, DebugView::None)));
+    EXPECT_FALSE(has(make(0, DebugView::Iridescence)));
+    EXPECT_TRUE(has(make(SPECULA_MATERIAL_IRIDESCENCE, DebugView::None)));
+    EXPECT_TRUE(has(make(SPECULA_MATERIAL_IRIDESCENCE, DebugView::Iridescence)));
+    EXPECT_FALSE(has(make(SPECULA_MATERIAL_IRIDESCENCE, DebugView::BrdfF)));
+    EXPECT_FALSE(has(make(SPECULA_MATERIAL_IRIDESCENCE, DebugView::None, true)));
+    const std::vector<std::string> view = make(0, DebugView::Iridescence);
+    EXPECT_NE(std::find(view.begin(), view.end(), "DEBUG_VIEW_IRIDESCENCE"), view.end());
+}
+
+// Every debug view has a name that parses back to it, and a material view its own define; the
+// clearcoat's views keep CLEARCOAT on a coated material (they show the layer), the other
+// material views drop it.
+TEST(VariantKey, EveryDebugViewNamesItselfAndTheClearcoatViewsKeepTheLayer)
+{
+    std::set<std::string> names;
+    for (int k = 0; k <= int(kLastDebugView); ++k) {
+        const DebugView view = DebugView(k);
+        const std::string name = debugViewName(view);
+        EXPECT_TRUE(names.insert(name).second) << name;
+        EXPECT_EQ(parseDebugView(name), view) << name;
+    }
+    EXPECT_FALSE(parseDebugView("clear-coat").has_value());
+    const auto make = [](DebugView d) {
+        return ForwardVariant::make(SPECULA_MATERIAL_CLEARCOAT, {}, d, IblVariant::None, false, false, false).defines();
+    };
+    const auto has = [](const std::vector<std::string>& defines, const char* define) {
+        return std::find(defines.begin(), defines.end(), define) != defines.end();
+    };
+    EXPECT_TRUE(has(make(DebugView::None), "CLEARCOAT"));
+    EXPECT_TRUE(has(make(DebugView::Clearcoat), "CLEARCOAT"));
+    EXPECT_TRUE(has(make(DebugView::Clearcoat), "DEBUG_VIEW_CLEARCOAT"));
+    EXPECT_TRUE(has(make(DebugView::ClearcoatNormal), "CLEARCOAT"));
+    EXPECT_TRUE(has(make(DebugView::ClearcoatNormal), "DEBUG_VIEW_CLEARCOAT_NORMAL"));
+    EXPECT_FALSE(has(make(DebugView::Normal), "CLEARCOAT"));
+    EXPECT_FALSE(has(make(DebugView::Sheen), "CLEARCOAT"));
+}
