@@ -14,6 +14,8 @@
 #include "Viewer.h"
 #include "core/Error.h"
 #include "core/Log.h"
+#include "core/ProcessMemory.h"
+#include "gl/ObjectCounts.h"
 #include "platform/Context.h"
 #include "settings/PassSettings.h"
 
@@ -373,6 +375,12 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         if (panel == kPanels.end()) throw Error("no panel '{}' (statistics, scene, lights, materials, brdf, environment, post)", w.text(1));
         if (w.text(2) != "open" && w.text(2) != "closed") throw Error("panel wants open or closed (got '{}')", w.text(2));
         viewer.panelRequests[panel->second] = w.text(2) == "open";
+        return 0;
+    }
+    if (a == "log-memory") {
+        // The soak's figures (docs/testing.md#soak): resident memory and the GL objects held.
+        const gl::ObjectCounts objects = gl::liveObjects();
+        log::info("memory: resident {:.1f} MiB, GL objects {} ({})", residentMebibytes(), objects.total(), objects.describe());
         return 0;
     }
     if (a == "log-stats") {

@@ -10,13 +10,11 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <string>
-
-#include <unistd.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/ProcessMemory.h"
 #include "gl/ObjectCounts.h"
 #include "render/Renderer.h"
 #include "scene/DemoScenes.h"
@@ -27,13 +25,10 @@ using specula::test::GlTest;
 
 namespace {
 
-/// Resident set size of this process, bytes (/proc/self/statm, second field, in pages).
+/// Resident set size of this process, bytes.
 double residentBytes()
 {
-    std::ifstream statm("/proc/self/statm");
-    long pages = 0, resident = 0;
-    statm >> pages >> resident;
-    return double(resident) * double(sysconf(_SC_PAGESIZE));
+    return residentMebibytes() * 1048576.0;
 }
 
 int envInt(const char* name, int fallback)
@@ -84,8 +79,12 @@ TEST_F(GlTest, SoakMemoryAndGlObjectsStayFlat)
             glAtWarmup = gl::liveObjects();
             std::printf("soak: frame %d: resident %.1f MiB, GL objects %lld (%s)\n", frame, rssAtWarmup / 1048576.0,
                         static_cast<long long>(glAtWarmup.total()), glAtWarmup.describe().c_str());
+            std::fflush(stdout);
         }
-        if (frame > warmup && frame % 10000 == 0) std::printf("soak: frame %d: resident %.1f MiB\n", frame, residentBytes() / 1048576.0);
+        if (frame > warmup && frame % 10000 == 0) {
+            std::printf("soak: frame %d: resident %.1f MiB\n", frame, residentBytes() / 1048576.0);
+            std::fflush(stdout);
+        }
     }
     const double rssAtEnd = residentBytes();
     const gl::ObjectCounts glAtEnd = gl::liveObjects();
