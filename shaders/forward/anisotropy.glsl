@@ -80,6 +80,15 @@ float anisotropicTableRoughness(AnisotropicLobe a, float perceptualRoughness)
     return sqrt(sqrt(0.5 * dot(alphas, alphas)));
 }
 
+// The anisotropic lobe's D V for half vector h (NoV, NoL, NoH clamped as evaluateBrdfLobes does).
+float anisotropicDV(SurfaceBrdf s, AnisotropicLobe a, vec3 v, vec3 l, vec3 h, float NoV, float NoL, float NoH)
+{
+    vec2 alphas = anisotropicAlphas(a, s.alpha);
+    float D = D_GGX_Anisotropic(NoH, dot(a.t, h), dot(a.b, h), alphas.x, alphas.y);
+    float V = V_SmithGGXCorrelatedAnisotropic(NoV, NoL, dot(a.t, v), dot(a.b, v), dot(a.t, l), dot(a.b, l), alphas.x, alphas.y);
+    return D * V;
+}
+
 // evaluateBrdfLobes (brdf/brdf.glsl) with the anisotropic D and V.
 void evaluateAnisotropicLobes(SurfaceBrdf s, AnisotropicLobe a, vec3 n, vec3 v, vec3 l, out vec3 diffuse, out vec3 specular)
 {
@@ -88,11 +97,8 @@ void evaluateAnisotropicLobes(SurfaceBrdf s, AnisotropicLobe a, vec3 n, vec3 v, 
     float NoL = saturate(dot(n, l));
     float NoH = saturate(dot(n, h));
     float VoH = saturate(dot(v, h));
-    vec2 alphas = anisotropicAlphas(a, s.alpha);
     vec3 F = brdfF(s, VoH);
-    float D = D_GGX_Anisotropic(NoH, dot(a.t, h), dot(a.b, h), alphas.x, alphas.y);
-    float V = V_SmithGGXCorrelatedAnisotropic(NoV, NoL, dot(a.t, v), dot(a.b, v), dot(a.t, l), dot(a.b, l), alphas.x, alphas.y);
-    specular = F * (D * V);
+    specular = F * anisotropicDV(s, a, v, l, h, NoV, NoL, NoH);
     diffuse = (1.0 - F) * brdfDiffuse(s, NoV, NoL, VoH, dot(v, l));
 }
 

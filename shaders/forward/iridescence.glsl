@@ -39,7 +39,17 @@ vec3 iridescentDiffuseWeight(vec3 F, vec3 film, float factor)
     return mix(1.0 - F, vec3(max(1.0 - iridescenceMax3(film), 0.0)), factor);
 }
 
-// evaluateBrdfLobes (brdf/brdf.glsl) with the film's Fresnel mixed in at v.h.
+// The lobes with the film's Fresnel mixed in at v.h, for the specular lobe's D V.
+void iridescentLobes(SurfaceBrdf s, ThinFilm film, float DV, float NoV, float NoL, float VoH, float VoL, out vec3 diffuse,
+                     out vec3 specular)
+{
+    vec3 F = brdfF(s, VoH);
+    vec3 filmF = thinFilmFresnel(film, VoH);
+    specular = mix(F, filmF, film.factor) * DV;
+    diffuse = iridescentDiffuseWeight(F, filmF, film.factor) * brdfDiffuse(s, NoV, NoL, VoH, VoL);
+}
+
+// evaluateBrdfLobes (brdf/brdf.glsl) with the film's Fresnel.
 void evaluateIridescentLobes(SurfaceBrdf s, ThinFilm film, vec3 n, vec3 v, vec3 l, out vec3 diffuse, out vec3 specular)
 {
     vec3 h = normalize(v + l);
@@ -47,16 +57,12 @@ void evaluateIridescentLobes(SurfaceBrdf s, ThinFilm film, vec3 n, vec3 v, vec3 
     float NoL = saturate(dot(n, l));
     float NoH = saturate(dot(n, h));
     float VoH = saturate(dot(v, h));
-    vec3 F = brdfF(s, VoH);
-    vec3 filmF = thinFilmFresnel(film, VoH);
-    float D = brdfD(NoH, s.alpha);
-    float V = brdfV(s, NoV, NoL, NoH, VoH);
-    specular = mix(F, filmF, film.factor) * (D * V);
-    diffuse = iridescentDiffuseWeight(F, filmF, film.factor) * brdfDiffuse(s, NoV, NoL, VoH, dot(v, l));
+    float DV = brdfD(NoH, s.alpha) * brdfV(s, NoV, NoL, NoH, VoH);
+    iridescentLobes(s, film, DV, NoV, NoL, VoH, dot(v, l), diffuse, specular);
 }
 
 #if defined(ANISOTROPY)
-// Both: evaluateAnisotropicLobes (forward/anisotropy.glsl) with the film's Fresnel mixed in.
+// Both: evaluateAnisotropicLobes (forward/anisotropy.glsl) with the film's Fresnel.
 void evaluateIridescentAnisotropicLobes(SurfaceBrdf s, ThinFilm film, AnisotropicLobe a, vec3 n, vec3 v, vec3 l, out vec3 diffuse,
                                         out vec3 specular)
 {
@@ -65,13 +71,7 @@ void evaluateIridescentAnisotropicLobes(SurfaceBrdf s, ThinFilm film, Anisotropi
     float NoL = saturate(dot(n, l));
     float NoH = saturate(dot(n, h));
     float VoH = saturate(dot(v, h));
-    vec2 alphas = anisotropicAlphas(a, s.alpha);
-    vec3 F = brdfF(s, VoH);
-    vec3 filmF = thinFilmFresnel(film, VoH);
-    float D = D_GGX_Anisotropic(NoH, dot(a.t, h), dot(a.b, h), alphas.x, alphas.y);
-    float V = V_SmithGGXCorrelatedAnisotropic(NoV, NoL, dot(a.t, v), dot(a.b, v), dot(a.t, l), dot(a.b, l), alphas.x, alphas.y);
-    specular = mix(F, filmF, film.factor) * (D * V);
-    diffuse = iridescentDiffuseWeight(F, filmF, film.factor) * brdfDiffuse(s, NoV, NoL, VoH, dot(v, l));
+    iridescentLobes(s, film, anisotropicDV(s, a, v, l, h, NoV, NoL, NoH), NoV, NoL, VoH, dot(v, l), diffuse, specular);
 }
 #endif
 

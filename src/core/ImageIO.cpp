@@ -442,17 +442,26 @@ std::optional<std::string> checkRadianceData(const std::vector<char>& data)
     };
     const std::string truncated = "the file is truncated";
 
-    // Header lines end with an empty one; the resolution line follows.
+    // Header lines end with an empty one; the resolution line follows. stb_image reads each line
+    // as a C string: a line that starts with a NUL is empty to it (fuzz_hdr found a header that
+    // ended so, and the walk below must start where stb_image's decoding does).
     for (;;) {
         const auto line = nextLine();
         if (!line) return truncated;
-        if (line->empty()) break;
+        if (line->empty() || (*line)[0] == '\0') break;
     }
     const auto resolution = nextLine();
     if (!resolution) return truncated;
-    int width = 0, height = 0;
-    if (std::sscanf(resolution->c_str(), "-Y %d +X %d", &height, &width) != 2 || width <= 0 || height <= 0)
-        return std::nullopt;
+    // Parsed as stb_image parses it ("-Y H +X W", strtol), up to the line's first NUL.
+    const char* token = resolution->c_str();
+    if (std::strncmp(token, "-Y ", 3) != 0) return std::nullopt;
+    char* end = nullptr;
+    const int height = int(std::strtol(token + 3, &end, 10)); // stb_image's (int) conversion too
+    token = end;
+    while (*token == ' ') ++token;
+    if (std::strncmp(token, "+X ", 3) != 0) return std::nullopt;
+    const int width = int(std::strtol(token + 3, nullptr, 10));
+    if (width <= 0 || height <= 0 || width > (1 << 24) || height > (1 << 24)) return std::nullopt; // it refuses those
     const uint64_t flatSize = uint64_t(width) * uint64_t(height) * 4;
     // Outside these widths the format has no run-length encoding.
     if (width < 8 || width >= 32768) return size - pos >= flatSize ? std::nullopt : std::optional(truncated);
