@@ -58,7 +58,7 @@ dvec3 iridescentFresnel(double outsideIor, double filmIor, double cosTheta1, dou
     const double phi21 = kPi - phi12;
     // Second interface, film to base: the base's IOR from its F0 (the extension's guard of
     // +0.0001 against F0 = 0, and below 1 so that a white metal keeps a finite IOR).
-    dvec3 R23, phi23;
+    dvec3 R23(0.0), phi23(0.0);
     for (int k = 0; k < 3; ++k) {
         const double f0 = std::min(baseF0[k] + 0.0001, 0.9999);
         const double baseIor = (1.0 + std::sqrt(f0)) / (1.0 - std::sqrt(f0));
