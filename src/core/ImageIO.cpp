@@ -570,9 +570,18 @@ void writeExr(const fs::path& path, const ImageFloat& image)
     file.commit(failure.empty() ? nullptr : failure.c_str());
 }
 
+bool isPngOrJpeg(const void* bytes, size_t size)
+{
+    static constexpr unsigned char kPng[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static constexpr unsigned char kJpeg[] = {0xff, 0xd8, 0xff};
+    return (size >= sizeof kPng && std::memcmp(bytes, kPng, sizeof kPng) == 0) ||
+           (size >= sizeof kJpeg && std::memcmp(bytes, kJpeg, sizeof kJpeg) == 0);
+}
+
 ImageRGBA8 readPng(const fs::path& path)
 {
     const std::vector<char> data = readFile(path);
+    if (!isPngOrJpeg(data.data(), data.size())) readFailed(path, "not a readable image (not a PNG or JPEG file)");
     int width = 0, height = 0, channels = 0;
     // stb_image allocates the whole image from the header's size before reading the pixels.
     {

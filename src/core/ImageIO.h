@@ -34,6 +34,10 @@ void writeExr(const std::filesystem::path& path, const ImageFloat& image);
 /// Any 8-bit image stb_image decodes (PNG, JPEG, TGA, BMP...), expanded to RGBA.
 /// Errors read "cannot read <path>: <reason>" (missing, truncated, not an image).
 ImageRGBA8 readPng(const std::filesystem::path& path);
+/// True when `bytes` start with a PNG or a JPEG signature: the encoded images glTF allows, and
+/// the only ones Specula hands to stb_image's 8-bit decoders (its others have had memory bugs:
+/// Debian 12's reads a 16-bit PNM past the end of its own buffer).
+bool isPngOrJpeg(const void* bytes, size_t size);
 /// A Radiance .hdr or an OpenEXR file (any compression, DWAA/DWAB included; half or float
 /// channels; recognised by content, not extension). Alpha is 1 where the file has none.
 /// Negative and NaN values (lossy EXR compression rings below zero around bright sources)

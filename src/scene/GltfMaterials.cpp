@@ -8,6 +8,7 @@
 #include <stb/stb_image.h>
 #include <webp/decode.h>
 
+#include "core/ImageIO.h"
 #include "scene/GltfInternal.h"
 
 namespace specula::scene::gltf_detail {
@@ -32,6 +33,9 @@ std::string decodeRgba8(const unsigned char* bytes, size_t size, tinygltf::Image
     int width = 0, height = 0, channels = 0;
     // EXT_texture_webp's images (RIFF container, WEBP form), decoded with libwebp.
     const bool webp = size >= 12 && std::memcmp(bytes, "RIFF", 4) == 0 && std::memcmp(bytes + 8, "WEBP", 4) == 0;
+    // glTF's images are PNG and JPEG (WebP with EXT_texture_webp); stb_image's other decoders
+    // are not reached (fuzz_texture found its 16-bit PNM path reading past its buffer).
+    if (!webp && !isPngOrJpeg(bytes, size)) return "cannot decode it (not a PNG, JPEG or WebP image)";
     if (webp ? WebPGetInfo(bytes, size, &width, &height) != 0 : stbi_info_from_memory(bytes, length, &width, &height, &channels) != 0) {
         const LoadLimits& limits = decoding.limits;
         const uint64_t bytesNeeded = uint64_t(width) * uint64_t(height) * 4;

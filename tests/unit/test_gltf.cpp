@@ -855,6 +855,28 @@ TEST(GltfErrors, MissingImageIsAWarning)
     for (const auto& warning : scene.warnings) EXPECT_EQ(warning.find('\n'), std::string::npos);
 }
 
+// fuzz_texture's finding: a 16-bit PGM ("P5", maxval 22324) as a texture made Debian 12's
+// stb_image return a buffer half the size of its 16-bit image, which the importer read past
+// (AddressSanitizer: heap-buffer-overflow). glTF's images are PNG and JPEG (and WebP with its
+// extension): anything else is now left out with a warning before stb_image sees it.
+TEST(GltfErrors, ImagesThatAreNotPngJpegOrWebpAreLeftOut)
+{
+    TempDir dir;
+    GltfBuilder b;
+    auto& primitive = b.primitive({{"POSITION", b.vec3(kTriangle)}, {"TEXCOORD_0", b.vec2({0, 0, 1, 0, 0, 1})}});
+    primitive["material"] = 0;
+    b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    b.doc["textures"] = {{{"source", 0}}};
+    b.doc["images"] = {{{"uri", "found.png"}}};
+    static const char kInput[] = "P52222\r\r\r\r2\r\r\r22324"; // the fuzzer's 19 bytes
+    writeFile(dir / "found.png", std::string_view(kInput, sizeof kInput - 1));
+    const Scene scene = loadGltf(b.write(dir, "pgm.gltf"));
+    ASSERT_EQ(scene.images.size(), 1u);
+    EXPECT_TRUE(scene.images[0].pixels.empty());
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("not a PNG, JPEG or WebP image"), std::string::npos) << scene.warnings[0];
+}
+
 TEST(GltfErrors, RandomCorruptionNeverCrashes)
 {
     // Flip bytes all over Box.glb: every result must be a scene or an Error, never a crash.

@@ -230,6 +230,11 @@ TEST(ImageIo, ReadErrors)
     const fs::path text = dir / "text.png";
     writeFile(text, "hello, world\n");
     EXPECT_TRUE(errorOf([&] { readPng(text); }).starts_with("cannot read " + text.string() + ": not a readable image"));
+    // Formats stb_image reads but glTF and scene files do not use are not decoded (a 16-bit
+    // PGM made Debian 12's stb_image overrun its own buffer).
+    writeFile(dir / "p.png", std::string_view("P5 2 1 65535\n\x01\x02\x03\x04", 17));
+    EXPECT_EQ(errorOf([&] { readPng(dir / "p.png"); }),
+              "cannot read " + (dir / "p.png").string() + ": not a readable image (not a PNG or JPEG file)");
     EXPECT_EQ(errorOf([&] { readFloatImage(text); }),
               "cannot read " + text.string() + ": not a Radiance .hdr or OpenEXR image");
 
