@@ -16,15 +16,16 @@ namespace {
 // An extension's texture slots are bound only for the variant that samples them.
 bool sampledByVariant(const MaterialBinding& m, TextureSlot slot)
 {
+    const auto has = [&](uint32_t bit) { return (m.features & bit) != 0; };
     switch (slot) {
     case TextureSlot::Clearcoat:
     case TextureSlot::ClearcoatRoughness:
-    case TextureSlot::ClearcoatNormal: return m.clearcoat;
+    case TextureSlot::ClearcoatNormal: return has(SPECULA_MATERIAL_CLEARCOAT);
     case TextureSlot::SheenColor:
-    case TextureSlot::SheenRoughness: return m.sheen;
-    case TextureSlot::Anisotropy: return m.anisotropy;
+    case TextureSlot::SheenRoughness: return has(SPECULA_MATERIAL_SHEEN);
+    case TextureSlot::Anisotropy: return has(SPECULA_MATERIAL_ANISOTROPY);
     case TextureSlot::Iridescence:
-    case TextureSlot::IridescenceThickness: return m.iridescence;
+    case TextureSlot::IridescenceThickness: return has(SPECULA_MATERIAL_IRIDESCENCE);
     default: return true;
     }
 }

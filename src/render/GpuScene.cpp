@@ -272,16 +272,12 @@ GpuScene::GpuScene(const scene::Scene& scene)
         // Dispersion spreads what a volume refracts: nothing to spread without one.
         if (m.dispersion > 0.0f && m.thickness > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_DISPERSION;
         // A zero factor is no layer at all (the texture only scales the factor): no variant for it.
-        binding.clearcoat = m.clearcoatFactor > 0.0f;
-        if (binding.clearcoat) gpu.flags.x |= SPECULA_MATERIAL_CLEARCOAT;
+        if (m.clearcoatFactor > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_CLEARCOAT;
         // A black sheen colour is no sheen (the extension's words); the texture only scales it.
-        binding.sheen = glm::any(glm::greaterThan(m.sheenColorFactor, glm::vec3(0.0f)));
-        if (binding.sheen) gpu.flags.x |= SPECULA_MATERIAL_SHEEN;
+        if (glm::any(glm::greaterThan(m.sheenColorFactor, glm::vec3(0.0f)))) gpu.flags.x |= SPECULA_MATERIAL_SHEEN;
         // Strength 0 is the isotropic lobe (the texture's blue only scales it): no variant.
-        binding.anisotropy = m.anisotropyStrength > 0.0f;
-        if (binding.anisotropy) gpu.flags.x |= SPECULA_MATERIAL_ANISOTROPY;
-        binding.iridescence = m.iridescenceFactor > 0.0f;
-        if (binding.iridescence) gpu.flags.x |= SPECULA_MATERIAL_IRIDESCENCE;
+        if (m.anisotropyStrength > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_ANISOTROPY;
+        if (m.iridescenceFactor > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_IRIDESCENCE;
         // The shading model and BRDF terms select the variant too (not read by the shaders).
         binding.features = gpu.flags.x | packShading(m.shading);
         gpuMaterials.push_back(gpu);
@@ -506,11 +502,6 @@ void GpuScene::setFeature(int material, uint32_t bit, bool on)
         if (mRecordMaterial[record] != material) continue;
         MaterialBinding& binding = mMaterials[record];
         binding.features = on ? binding.features | bit : binding.features & ~bit;
-        // The layers' texture units are bound for their variants only (DrawList).
-        binding.clearcoat = (binding.features & SPECULA_MATERIAL_CLEARCOAT) != 0;
-        binding.sheen = (binding.features & SPECULA_MATERIAL_SHEEN) != 0;
-        binding.anisotropy = (binding.features & SPECULA_MATERIAL_ANISOTROPY) != 0;
-        binding.iridescence = (binding.features & SPECULA_MATERIAL_IRIDESCENCE) != 0;
         mRecords[record].flags.x = (mRecords[record].flags.x & ~bit) | (binding.features & bit);
         mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
                                &mRecords[record].flags.x);

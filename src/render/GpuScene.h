@@ -49,11 +49,9 @@ struct MaterialBinding {
     scene::AlphaMode alphaMode = scene::AlphaMode::Opaque;
     bool doubleSided = false;
     float transmission = 0.0f; ///< KHR_materials_transmission factor
-    bool clearcoat = false;    ///< KHR_materials_clearcoat: the CLEARCOAT variant, whose units 19-21 are bound
-    bool sheen = false;        ///< KHR_materials_sheen: the SHEEN variant, whose units 22-23 are bound
-    bool anisotropy = false;   ///< KHR_materials_anisotropy: the ANISOTROPY variant, whose unit 24 is bound
-    bool iridescence = false;  ///< KHR_materials_iridescence: the IRIDESCENCE variant, whose units 25-26 are bound
-    uint32_t features = 0; ///< SPECULA_MATERIAL_* bits: selects the shader variant
+    /// SPECULA_MATERIAL_* bits: selects the shader variant, and which extension texture units
+    /// the draw binds (DrawList: clearcoat 19-21, sheen 22-23, anisotropy 24, iridescence 25-26)
+    uint32_t features = 0;
 };
 
 /// The shadow rule for surfaces light passes through (docs/transparency.md): a surface casts
