@@ -380,7 +380,7 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
     if (a == "log-memory") {
         // The soak's figures (docs/testing.md#soak): resident memory and the GL objects held.
         const gl::ObjectCounts objects = gl::liveObjects();
-        log::info("memory: resident {:.1f} MiB, GL objects {} ({})", residentMebibytes(), objects.total(), objects.describe());
+        log::info("memory: resident {:.1f} MiB, heap in use {:.1f} MiB, GL objects {} ({})", residentMebibytes(), heapInUseMebibytes(), objects.total(), objects.describe());
         return 0;
     }
     if (a == "log-stats") {

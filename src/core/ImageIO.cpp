@@ -21,8 +21,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfRgbaFile.h>
-#include <stb/stb_image.h>
-#include <stb/stb_image_write.h>
+#include "core/StbImage.h"
 
 #include "core/Error.h"
 

@@ -5,7 +5,7 @@
 
 #include <cstring>
 
-#include <stb/stb_image.h>
+#include "core/StbImage.h"
 #include <webp/decode.h>
 
 #include "core/ImageIO.h"

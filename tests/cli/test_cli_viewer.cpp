@@ -530,14 +530,15 @@ TEST(CliViewer, LoadingAModelAndAnEnvironmentAgainLeavesNothingBehind)
     }
     const auto r = runCli("view --width 160 --height 120 --script " + dir + "/script.txt");
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const std::regex line(R"(memory: resident ([0-9.]+) MiB, GL objects ([0-9]+) \(([^)]*)\))");
-    std::vector<std::tuple<double, int, std::string>> samples;
+    const std::regex line(R"(memory: resident ([0-9.]+) MiB, heap in use ([0-9.]+) MiB, GL objects ([0-9]+) \(([^)]*)\))");
+    std::vector<std::tuple<double, int, std::string, double>> samples;
     for (auto it = std::sregex_iterator(r.err.begin(), r.err.end(), line); it != std::sregex_iterator(); ++it)
-        samples.emplace_back(std::stod((*it)[1]), std::stoi((*it)[2]), (*it)[3]);
+        samples.emplace_back(std::stod((*it)[1]), std::stoi((*it)[3]), (*it)[4], std::stod((*it)[2]));
     ASSERT_EQ(samples.size(), 3u) << r.err;
-    for (const auto& [resident, objects, kinds] : samples) {
+    for (const auto& [resident, objects, kinds, heap] : samples) {
         EXPECT_EQ(objects, std::get<1>(samples[0])) << kinds << " against " << std::get<2>(samples[0]);
-        std::printf("viewer soak: resident %.1f MiB, GL objects %d (%s)\n", resident, objects, kinds.c_str());
+        std::printf("viewer soak: resident %.1f MiB, heap in use %.1f MiB, GL objects %d (%s)\n", resident, heap, objects,
+                    kinds.c_str());
     }
     EXPECT_LT(std::get<0>(samples[2]) - std::get<0>(samples[1]), 64.0);
 }

@@ -6,8 +6,10 @@
 // scripts/soak.sh runs 100,000 and docs/testing.md#soak records the figures.
 //   SPECULA_SOAK_FRAMES=N   frames in all (default 1000)
 //   SPECULA_SOAK_WARMUP=N   frames before the reference point (default 2N / 5, at most 1000)
+//   SPECULA_SOAK_REPORT=N   print memory every N frames after warm-up (default 10000)
 #include "GlTestContext.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -43,6 +45,7 @@ TEST_F(GlTest, SoakMemoryAndGlObjectsStayFlat)
 {
     const int frames = envInt("SPECULA_SOAK_FRAMES", 1000);
     const int warmup = envInt("SPECULA_SOAK_WARMUP", std::min(frames * 2 / 5, 1000));
+    const int report = std::max(1, envInt("SPECULA_SOAK_REPORT", 10000));
     ASSERT_GT(frames, warmup);
 
     scene::Scene demo = scene::makeDemoScene();
@@ -77,20 +80,22 @@ TEST_F(GlTest, SoakMemoryAndGlObjectsStayFlat)
         if (frame == warmup) {
             rssAtWarmup = residentBytes();
             glAtWarmup = gl::liveObjects();
-            std::printf("soak: frame %d: resident %.1f MiB, GL objects %lld (%s)\n", frame, rssAtWarmup / 1048576.0,
-                        static_cast<long long>(glAtWarmup.total()), glAtWarmup.describe().c_str());
+            std::printf("soak: frame %d: resident %.1f MiB, heap in use %.1f MiB, GL objects %lld (%s)\n", frame,
+                        rssAtWarmup / 1048576.0, heapInUseMebibytes(), static_cast<long long>(glAtWarmup.total()),
+                        glAtWarmup.describe().c_str());
             std::fflush(stdout);
         }
-        if (frame > warmup && frame % 10000 == 0) {
-            std::printf("soak: frame %d: resident %.1f MiB\n", frame, residentBytes() / 1048576.0);
+        if (frame > warmup && frame % report == 0) {
+            std::printf("soak: frame %d: resident %.1f MiB, heap in use %.1f MiB\n", frame, residentBytes() / 1048576.0,
+                        heapInUseMebibytes());
             std::fflush(stdout);
         }
     }
     const double rssAtEnd = residentBytes();
     const gl::ObjectCounts glAtEnd = gl::liveObjects();
-    std::printf("soak: frame %d: resident %.1f MiB (%+.2f MiB since frame %d), GL objects %lld (%s)\n", frames,
-                rssAtEnd / 1048576.0, (rssAtEnd - rssAtWarmup) / 1048576.0, warmup, static_cast<long long>(glAtEnd.total()),
-                glAtEnd.describe().c_str());
+    std::printf("soak: frame %d: resident %.1f MiB (%+.2f MiB since frame %d), heap in use %.1f MiB, GL objects %lld (%s)\n",
+                frames, rssAtEnd / 1048576.0, (rssAtEnd - rssAtWarmup) / 1048576.0, warmup, heapInUseMebibytes(),
+                static_cast<long long>(glAtEnd.total()), glAtEnd.describe().c_str());
     // Every GL object the frame needs exists by the end of warm-up; one more is a leak.
     EXPECT_EQ(glAtEnd, glAtWarmup) << "at warm-up: " << glAtWarmup.describe() << "\nat the end: " << glAtEnd.describe();
     // Tolerance 4 MiB: malloc's arenas and llvmpipe's caches settle in steps of a few hundred

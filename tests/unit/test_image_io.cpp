@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <random>
 #include <string>
 #include <vector>
 
+#include <dlfcn.h>
+#include "core/StbImage.h"
 #include <unistd.h>
 
 #include "TestFiles.h"
@@ -405,6 +408,31 @@ TEST(ImageIo, ExrDataWindowOverTheLimitIsAnError)
     bytes.replace(exrAttributeSize(bytes, "dataWindow") + 4, 16, reinterpret_cast<const char*>(window), 16);
     const std::string message = errorOf([&] { readFloatImage(dir.write("window.exr", bytes)); });
     EXPECT_NE(message.find("unsupported image size"), std::string::npos) << message;
+}
+
+TEST(ImageIo, StbImageIsSpeculasOwnCopy)
+{
+    // Debian's libdraco.so.7 exports a copy of stb_image of its own. With libstb.so linked, the
+    // dynamic linker bound every stbi_* call to whichever library came first in the NEEDED
+    // list, and that was draco's: every image Specula decoded, and the fuzzers fuzzed, went
+    // through draco's copy. core/StbImage.cpp now compiles Debian's headers into the program
+    // under names of its own (core/StbImage.h): the function this executable calls must be in
+    // the executable itself.
+    Dl_info info{};
+    ASSERT_NE(dladdr(reinterpret_cast<void*>(&stbi_load_from_memory), &info), 0);
+    ASSERT_NE(info.dli_fname, nullptr);
+    std::error_code error;
+    EXPECT_TRUE(fs::equivalent(info.dli_fname, "/proc/self/exe", error)) << "stbi_load_from_memory is from " << info.dli_fname;
+    // And nothing this program links takes a stbi_ function from a shared library (binutils' nm
+    // on its own dynamic symbol table: with libstb.so linked, 12 of them).
+    FILE* pipe = ::popen("nm -D --undefined-only /proc/self/exe 2>&1", "r");
+    ASSERT_NE(pipe, nullptr);
+    std::string imports;
+    char buffer[4096];
+    for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) imports.append(buffer, n);
+    ASSERT_EQ(::pclose(pipe), 0) << imports;
+    EXPECT_NE(imports.find("memcpy"), std::string::npos) << imports; // nm ran and listed the imports
+    EXPECT_EQ(imports.find(" stbi"), std::string::npos) << imports;
 }
 
 TEST(ImageIo, EmptyAndTinyInputsAreErrors)
