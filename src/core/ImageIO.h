@@ -38,6 +38,12 @@ ImageRGBA8 readPng(const std::filesystem::path& path);
 /// the only ones Specula hands to stb_image's 8-bit decoders (its others have had memory bugs:
 /// Debian 12's reads a 16-bit PNM past the end of its own buffer).
 bool isPngOrJpeg(const void* bytes, size_t size);
+/// Why stb_image must not decode this JPEG, or "" (also for what is not a JPEG): a Huffman table
+/// of more than 256 codes. Debian 12's stb_image (2.27) copies each table's code lengths and
+/// values into 257- and 256-entry arrays without checking the count (up to 16 × 255), writing
+/// past them on the heap; the JPEG standard allows 256 at most, and stb 2.28 refuses more.
+/// Every DHT segment is walked, before and between the scans of a progressive JPEG.
+std::string jpegDefect(const void* bytes, size_t size);
 /// A Radiance .hdr or an OpenEXR file (any compression, DWAA/DWAB included; half or float
 /// channels; recognised by content, not extension). Alpha is 1 where the file has none.
 /// Negative and NaN values (lossy EXR compression rings below zero around bright sources)

@@ -36,6 +36,7 @@ std::string decodeRgba8(const unsigned char* bytes, size_t size, tinygltf::Image
     // glTF's images are PNG and JPEG (WebP with EXT_texture_webp); stb_image's other decoders
     // are not reached (fuzz_texture found its 16-bit PNM path reading past its buffer).
     if (!webp && !isPngOrJpeg(bytes, size)) return "cannot decode it (not a PNG, JPEG or WebP image)";
+    if (const std::string defect = jpegDefect(bytes, size); !defect.empty()) return "cannot decode it (" + defect + ")";
     if (webp ? WebPGetInfo(bytes, size, &width, &height) != 0 : stbi_info_from_memory(bytes, length, &width, &height, &channels) != 0) {
         const LoadLimits& limits = decoding.limits;
         const uint64_t bytesNeeded = uint64_t(width) * uint64_t(height) * 4;

@@ -877,6 +877,27 @@ TEST(GltfErrors, ImagesThatAreNotPngJpegOrWebpAreLeftOut)
     EXPECT_NE(scene.warnings[0].find("not a PNG, JPEG or WebP image"), std::string::npos) << scene.warnings[0];
 }
 
+TEST(GltfErrors, JpegsWithOversizedHuffmanTablesAreLeftOut)
+{
+    // fuzz_texture's first input once stb_image was built with the sanitizers: a DHT segment
+    // whose table declares more than 256 codes. Debian's stb_image 2.27 copies them into its
+    // 257-entry table unchecked (UBSan: index 257 out of bounds, stb_image.h:1990; a write past
+    // the table on the heap). Refused before stb_image sees it.
+    TempDir dir;
+    GltfBuilder b;
+    auto& primitive = b.primitive({{"POSITION", b.vec3(kTriangle)}, {"TEXCOORD_0", b.vec2({0, 0, 1, 0, 0, 1})}});
+    primitive["material"] = 0;
+    b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    b.doc["textures"] = {{{"source", 0}}};
+    b.doc["images"] = {{{"uri", "huffman.jpg"}}};
+    writeFile(dir / "huffman.jpg", readFile(fs::path(SPECULA_SOURCE_DIR) / "fuzz/seeds/texture/huffman-257.jpg"));
+    const Scene scene = loadGltf(b.write(dir, "huffman.gltf"));
+    ASSERT_EQ(scene.images.size(), 1u);
+    EXPECT_TRUE(scene.images[0].pixels.empty());
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("Huffman table of"), std::string::npos) << scene.warnings[0];
+}
+
 TEST(GltfErrors, RandomCorruptionNeverCrashes)
 {
     // Flip bytes all over Box.glb: every result must be a scene or an Error, never a crash.
