@@ -859,18 +859,28 @@ TEST(GltfErrors, MissingImageIsAWarning)
 // stb_image return a buffer half the size of its 16-bit image, which the importer read past
 // (AddressSanitizer: heap-buffer-overflow). glTF's images are PNG and JPEG (and WebP with its
 // extension): anything else is now left out with a warning before stb_image sees it.
-TEST(GltfErrors, ImagesThatAreNotPngJpegOrWebpAreLeftOut)
+namespace {
+
+/// A textured triangle whose one image is `bytes`, written to `uri` beside the .gltf.
+Scene loadTriangleTexturedWith(const TempDir& dir, const std::string& uri, std::string_view bytes)
 {
-    TempDir dir;
     GltfBuilder b;
     auto& primitive = b.primitive({{"POSITION", b.vec3(kTriangle)}, {"TEXCOORD_0", b.vec2({0, 0, 1, 0, 0, 1})}});
     primitive["material"] = 0;
     b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
     b.doc["textures"] = {{{"source", 0}}};
-    b.doc["images"] = {{{"uri", "found.png"}}};
+    b.doc["images"] = {{{"uri", uri}}};
+    writeFile(dir / uri, bytes);
+    return loadGltf(b.write(dir, "textured.gltf"));
+}
+
+} // namespace
+
+TEST(GltfErrors, ImagesThatAreNotPngJpegOrWebpAreLeftOut)
+{
+    TempDir dir;
     static const char kInput[] = "P52222\r\r\r\r2\r\r\r22324"; // the fuzzer's 19 bytes
-    writeFile(dir / "found.png", std::string_view(kInput, sizeof kInput - 1));
-    const Scene scene = loadGltf(b.write(dir, "pgm.gltf"));
+    const Scene scene = loadTriangleTexturedWith(dir, "found.png", std::string_view(kInput, sizeof kInput - 1));
     ASSERT_EQ(scene.images.size(), 1u);
     EXPECT_TRUE(scene.images[0].pixels.empty());
     ASSERT_EQ(scene.warnings.size(), 1u);
@@ -884,14 +894,8 @@ TEST(GltfErrors, JpegsWithOversizedHuffmanTablesAreLeftOut)
     // 257-entry table unchecked (UBSan: index 257 out of bounds, stb_image.h:1990; a write past
     // the table on the heap). Refused before stb_image sees it.
     TempDir dir;
-    GltfBuilder b;
-    auto& primitive = b.primitive({{"POSITION", b.vec3(kTriangle)}, {"TEXCOORD_0", b.vec2({0, 0, 1, 0, 0, 1})}});
-    primitive["material"] = 0;
-    b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
-    b.doc["textures"] = {{{"source", 0}}};
-    b.doc["images"] = {{{"uri", "huffman.jpg"}}};
-    writeFile(dir / "huffman.jpg", readFile(fs::path(SPECULA_SOURCE_DIR) / "fuzz/seeds/texture/huffman-257.jpg"));
-    const Scene scene = loadGltf(b.write(dir, "huffman.gltf"));
+    const Scene scene = loadTriangleTexturedWith(
+        dir, "huffman.jpg", readFile(fs::path(SPECULA_SOURCE_DIR) / "fuzz/seeds/texture/huffman-257.jpg"));
     ASSERT_EQ(scene.images.size(), 1u);
     EXPECT_TRUE(scene.images[0].pixels.empty());
     ASSERT_EQ(scene.warnings.size(), 1u);
