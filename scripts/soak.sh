@@ -1,17 +1,18 @@
 #!/usr/bin/env bash
 # The long soak (make soak), two parts (docs/testing.md#soak records their figures):
-#  1. 100,000 frames of tests/gl/test_soak.cpp, warm-up 4,000, with resident memory and live GL
-#     objects printed at frame 4,000, every 10,000 and at the end (SPECULA_SOAK_FRAMES overrides
-#     the count);
+#  1. 100,800 frames of tests/gl/test_soak.cpp, warm-up 3,600, with resident memory, the heap
+#     in use and live GL objects printed at frame 3,600, every 10,800 and at the end
+#     (SPECULA_SOAK_FRAMES overrides the count);
 #  2. the viewer under Xvfb loading DamagedHelmet and an HDR (venice and studio in turn)
 #     1,000 times by script (SPECULA_SOAK_LOADS overrides it), `log-memory` after load 10 and
 #     every 100 loads: the GL objects must be the same as after load 10.
 set -euo pipefail
 BUILD="${1:-build}"
 ASSETS="$(cd "$(dirname "$0")/.." && pwd)/../shared/assets"
-# The camera turns every 100 frames (a circle in 3,600), so warm-up is 4,000: one circle and more.
-export SPECULA_SOAK_FRAMES="${SPECULA_SOAK_FRAMES:-100000}" SPECULA_SOAK_WARMUP="${SPECULA_SOAK_WARMUP:-4000}"
-export SPECULA_SOAK_TURN="${SPECULA_SOAK_TURN:-100}" SPECULA_SOAK_REPORT="${SPECULA_SOAK_REPORT:-10000}"
+# The camera turns every 100 frames (a circle in 3,600 frames); warm-up is one circle, the run
+# 28 (100,800 frames), memory printed every 3 circles: always at the same point of the circle.
+export SPECULA_SOAK_FRAMES="${SPECULA_SOAK_FRAMES:-100800}" SPECULA_SOAK_WARMUP="${SPECULA_SOAK_WARMUP:-3600}"
+export SPECULA_SOAK_TURN="${SPECULA_SOAK_TURN:-100}" SPECULA_SOAK_REPORT="${SPECULA_SOAK_REPORT:-10800}"
 LOADS="${SPECULA_SOAK_LOADS:-1000}"
 
 if [ "${SPECULA_SOAK_SKIP_FRAMES:-0}" != 1 ]; then
