@@ -120,12 +120,14 @@ TEST_F(GlTest, SoakMemoryAndGlObjectsStayFlat)
     // Every GL object the frame needs exists by the end of warm-up; one more is a leak.
     EXPECT_EQ(glAtEnd, glAtWarmup) << "at warm-up: " << glAtWarmup.describe() << "\nat the end: " << glAtEnd.describe();
     // The heap in use (what malloc has handed out and not had back: the program's and the
-    // driver's allocations), within 4 MiB: a leak of 40 bytes a frame is 4 MiB over 100,000
-    // frames, of 6 KiB a frame over the suite's 720 (such a leak, put in on purpose: heap
-    // +4.25 MiB, and resident memory only +3.54). Resident memory also counts what the
-    // allocator keeps after a free (its arenas, one per thread that allocated) and moves by
-    // several MiB with the machine's load (+4.3 MiB in one CI run whose heap in use fell by
-    // 2.2 MiB), so it is bounded loosely, 32 MiB, against a leak that bypasses malloc.
+    // driver's allocations), within 16 MiB, and resident memory, within 48 MiB. On an idle
+    // machine the suite's run ends with the heap +0.06 MiB and resident memory +4.2 MiB; in a
+    // CI run, beside the other tests, +10.5 and +15.8 MiB: llvmpipe's memory for frames in
+    // flight depends on how far its threads lag, and resident memory also counts what the
+    // allocator keeps after a free. So the suite catches a leak of 23 KiB a frame or more (a
+    // deliberate one of 6 KiB a frame moved the heap by +4.25 MiB, resident memory by +3.54),
+    // and the GL objects exactly; scripts/soak.sh's 100,800 frames take the same bounds down to
+    // 170 bytes a frame.
     // Under AddressSanitizer freed memory waits in its quarantine (up to 256 MiB) before it is
     // reused and its allocator is not malloc's, so neither is bounded there; LeakSanitizer, at
     // exit, is the leak check instead.
@@ -138,8 +140,8 @@ TEST_F(GlTest, SoakMemoryAndGlObjectsStayFlat)
     std::printf("soak: AddressSanitizer build, memory not bounded (its quarantine grows it)\n");
 #else
     if (heapAtWarmup >= 0.0) {
-        EXPECT_LT(heapAtEnd - heapAtWarmup, 4.0) << "the heap in use grew after warm-up";
+        EXPECT_LT(heapAtEnd - heapAtWarmup, 16.0) << "the heap in use grew after warm-up";
     }
-    EXPECT_LT(rssAtEnd - rssAtWarmup, 32.0 * 1048576.0) << "resident memory grew after warm-up";
+    EXPECT_LT(rssAtEnd - rssAtWarmup, 48.0 * 1048576.0) << "resident memory grew after warm-up";
 #endif
 }
