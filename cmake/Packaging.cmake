@@ -34,7 +34,7 @@ target_include_directories(specula_library INTERFACE $<INSTALL_INTERFACE:${CMAKE
 target_link_libraries(specula_library
   PUBLIC glm::glm fmt::fmt
   PRIVATE spdlog::spdlog OpenEXR::OpenEXR Threads::Threads TinyGLTF::TinyGLTF draco::draco meshoptimizer::meshoptimizer
-          PkgConfig::WEBP glfw PkgConfig::EPOXY
+          PkgConfig::WEBP PkgConfig::PNG PkgConfig::JPEG glfw PkgConfig::EPOXY
           PkgConfig::EGL ${CMAKE_DL_LIBS})
 
 # --- Public headers: what include/specula/Specula.h reaches, found by following includes. ---
@@ -105,11 +105,11 @@ file(RELATIVE_PATH SPECULA_PC_TO_PREFIX /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfi
 string(REGEX REPLACE "/$" "" SPECULA_PC_TO_PREFIX "${SPECULA_PC_TO_PREFIX}")
 if(SPECULA_SHARED_LIBRARY)
   set(SPECULA_PC_REQUIRES "glm fmt")
-  set(SPECULA_PC_REQUIRES_PRIVATE "spdlog OpenEXR tinygltf draco libwebp glfw3 epoxy egl")
+  set(SPECULA_PC_REQUIRES_PRIVATE "spdlog OpenEXR tinygltf draco libwebp libpng libjpeg glfw3 epoxy egl")
   set(SPECULA_PC_LIBS_PRIVATE "-lmeshoptimizer -pthread -ldl")
   set(SPECULA_PC_LIBS "")
 else()
-  set(SPECULA_PC_REQUIRES "glm fmt spdlog OpenEXR tinygltf draco libwebp glfw3 epoxy egl")
+  set(SPECULA_PC_REQUIRES "glm fmt spdlog OpenEXR tinygltf draco libwebp libpng libjpeg glfw3 epoxy egl")
   set(SPECULA_PC_REQUIRES_PRIVATE "")
   # meshoptimizer installs no pkg-config file.
   set(SPECULA_PC_LIBS "-lmeshoptimizer -pthread -ldl")
@@ -167,7 +167,7 @@ set(CPACK_DEBIAN_RUNTIME_DESCRIPTION "physically based renderer on OpenGL 4.5, h
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_NAME libspecula-dev)
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SECTION libdevel)
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS
-    "specula (= ${PROJECT_VERSION}), libglm-dev, libfmt-dev, libspdlog-dev, libopenexr-dev, libtinygltf-dev, libdraco-dev, libmeshoptimizer-dev, libwebp-dev, libglfw3-dev, libepoxy-dev, libegl-dev, pkg-config")
+    "specula (= ${PROJECT_VERSION}), libglm-dev, libfmt-dev, libspdlog-dev, libopenexr-dev, libtinygltf-dev, libdraco-dev, libmeshoptimizer-dev, libwebp-dev, libpng-dev, libjpeg-dev, libglfw3-dev, libepoxy-dev, libegl-dev, pkg-config")
 set(CPACK_DEBIAN_DEVELOPMENT_DESCRIPTION "Specula renderer: static library and headers
  The renderer of the specula command line as a C++20 library: scenes, the
  renderer facade, frame settings, images and errors, with no OpenGL type in its

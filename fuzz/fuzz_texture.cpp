@@ -1,7 +1,9 @@
-// An encoded image (PNG, JPEG, or anything stb_image reads) as a glTF texture: wrapped in a
-// .glb as bufferView 0, image 0 of a textured material, so it takes the importer's path (the
-// size limits, stb_image, the 16-bit route). Any exception other than specula::Error, any
-// sanitizer report, is a finding.
+// An encoded image as a glTF texture: wrapped in a .glb as bufferView 0, image 0 of a textured
+// material, so it takes the importer's path (the signature check, the size limits read from the
+// header, libpng or libjpeg-turbo, the 16-bit rounding). Any exception other than
+// specula::Error, any sanitizer report, is a finding. (Debian's libpng and libjpeg-turbo are not
+// instrumented: a bad write inside them shows only if it crashes; OSS-Fuzz fuzzes them, built
+// with the sanitizers.)
 #include <cstddef>
 #include <cstdint>
 #include <cstring>

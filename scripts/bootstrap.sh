@@ -8,7 +8,7 @@ PACKAGES=(
   libglfw3-dev libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libglm-dev libstb-dev libimgui-dev libtinygltf-dev nlohmann-json3-dev
   libcli11-dev libfmt-dev libspdlog-dev libopenexr-dev
-  libdraco-dev libmeshoptimizer-dev libwebp-dev
+  libdraco-dev libmeshoptimizer-dev libwebp-dev libpng-dev libjpeg62-turbo-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   glslang-tools xvfb xauth
 )

@@ -261,7 +261,7 @@ std::vector<char> readFile(const fs::path& path)
 }
 
 /// stb_image reads through this so that a decoder asking for bytes past the end is noticed:
-/// stb_image pads missing bytes with zeros, so a truncated JPEG, say, would decode without error.
+/// stb_image pads missing bytes with zeros, so a truncated .hdr would decode without error.
 struct StbInput {
     const std::vector<char>& data;
     size_t position = 0;
@@ -569,77 +569,17 @@ void writeExr(const fs::path& path, const ImageFloat& image)
     file.commit(failure.empty() ? nullptr : failure.c_str());
 }
 
-bool isPngOrJpeg(const void* bytes, size_t size)
-{
-    static constexpr unsigned char kPng[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    static constexpr unsigned char kJpeg[] = {0xff, 0xd8, 0xff};
-    return (size >= sizeof kPng && std::memcmp(bytes, kPng, sizeof kPng) == 0) ||
-           (size >= sizeof kJpeg && std::memcmp(bytes, kJpeg, sizeof kJpeg) == 0);
-}
-
-std::string jpegDefect(const void* data, size_t size)
-{
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    if (size < 3 || bytes[0] != 0xff || bytes[1] != 0xd8) return "";
-    size_t at = 2;
-    while (at + 1 < size) {
-        if (bytes[at] != 0xff) { // entropy-coded data of a scan: on to the next marker
-            ++at;
-            continue;
-        }
-        const unsigned char marker = bytes[at + 1];
-        // Fill bytes, a stuffed zero and the restart markers are not segments.
-        if (marker == 0xff || marker == 0x00 || (marker >= 0xd0 && marker <= 0xd7) || marker == 0x01) {
-            at += marker == 0xff ? 1 : 2;
-            continue;
-        }
-        if (marker == 0xd9) break; // end of image
-        if (at + 4 > size) break;
-        const size_t length = size_t(bytes[at + 2]) << 8 | bytes[at + 3];
-        if (length < 2) break; // stb_image refuses it itself
-        if (marker == 0xc4) {
-            // As stb_image reads it: tables until the segment's length is used up, and bytes
-            // past the end of the data read as 0 (a truncated file's last table counts them).
-            const auto byteAt = [&](size_t i) { return i < size ? bytes[i] : 0; };
-            long left = long(length) - 2;
-            for (size_t table = at + 4; left > 0 && table < size;) {
-                size_t codes = 0;
-                for (size_t i = 1; i <= 16; ++i) codes += byteAt(table + i);
-                if (codes > 256)
-                    return fmt::format("a Huffman table of {} codes (a JPEG has at most 256; stb_image would write past its tables)", codes);
-                table += 17 + codes;
-                left -= long(17 + codes);
-            }
-        }
-        at += 2 + length;
-    }
-    return "";
-}
-
 ImageRGBA8 readPng(const fs::path& path)
 {
     const std::vector<char> data = readFile(path);
     if (!isPngOrJpeg(data.data(), data.size())) readFailed(path, "not a readable image (not a PNG or JPEG file)");
-    if (const std::string defect = jpegDefect(data.data(), data.size()); !defect.empty())
-        readFailed(path, "not a readable image (" + defect + ")");
-    int width = 0, height = 0, channels = 0;
-    // stb_image allocates the whole image from the header's size before reading the pixels.
-    {
-        StbInput probe{data};
-        if (stbi_info_from_callbacks(&StbInput::kCallbacks, &probe, &width, &height, &channels) &&
-            uint64_t(width) * uint64_t(height) > kMaxPixels)
-            readFailed(path, fmt::format("unsupported image size {}x{}", width, height));
-    }
-    StbInput input{data};
-    std::unique_ptr<stbi_uc, StbFree> pixels(
-        stbi_load_from_callbacks(&StbInput::kCallbacks, &input, &width, &height, &channels, 4));
-    if (!pixels) readFailed(path, fmt::format("not a readable image ({})", stbi_failure_reason()));
-    if (input.overran) readFailed(path, "the file is truncated");
-    ImageRGBA8 image;
-    image.width = width;
-    image.height = height;
-    image.pixels.assign(pixels.get(), pixels.get() + size_t(width) * size_t(height) * 4);
-    return image;
+    if (const std::optional<EncodedImageSize> size = encodedImageSize(data.data(), data.size());
+        size && uint64_t(size->width) * uint64_t(size->height) > kMaxPixels)
+        readFailed(path, fmt::format("unsupported image size {}x{}", size->width, size->height));
+    DecodedImage decoded = decodePngOrJpeg(data.data(), data.size());
+    if (decoded.error == "the file is truncated") readFailed(path, decoded.error);
+    if (!decoded.error.empty()) readFailed(path, fmt::format("not a readable image ({})", decoded.error));
+    return std::move(decoded.image);
 }
 
 ImageFloat readFloatImage(const fs::path& path)

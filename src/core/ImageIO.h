@@ -1,8 +1,10 @@
 #pragma once
-// Image files: 8-bit PNG for display-ready images, Radiance .hdr and OpenEXR for linear radiance.
+// Image files: 8-bit PNG (and JPEG, read) for display-ready images, Radiance .hdr and OpenEXR for linear radiance.
 // Every function throws specula::Error with one line naming the file.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace specula {
@@ -31,19 +33,30 @@ void writeHdr(const std::filesystem::path& path, const ImageFloat& image);
 /// OpenEXR, half-float RGBA, ZIP compression. Values beyond the half range are clamped to ±65504.
 void writeExr(const std::filesystem::path& path, const ImageFloat& image);
 
-/// Any 8-bit image stb_image decodes (PNG, JPEG, TGA, BMP...), expanded to RGBA.
-/// Errors read "cannot read <path>: <reason>" (missing, truncated, not an image).
+/// A PNG or a JPEG file, expanded to 8-bit RGBA (decodePngOrJpeg).
+/// Errors read "cannot read <path>: <reason>" (missing, truncated, not an image, over 2^27 pixels).
 ImageRGBA8 readPng(const std::filesystem::path& path);
-/// True when `bytes` start with a PNG or a JPEG signature: the encoded images glTF allows, and
-/// the only ones Specula hands to stb_image's 8-bit decoders (its others have had memory bugs:
-/// Debian 12's reads a 16-bit PNM past the end of its own buffer).
+/// True when `bytes` start with a PNG or a JPEG signature: the encoded images glTF allows
+/// (besides EXT_texture_webp's), and the only ones Specula decodes to 8 bits.
 bool isPngOrJpeg(const void* bytes, size_t size);
-/// Why stb_image must not decode this JPEG, or "" (also for what is not a JPEG): a Huffman table
-/// of more than 256 codes. Debian 12's stb_image (2.27) copies each table's code lengths and
-/// values into 257- and 256-entry arrays without checking the count (up to 16 × 255), writing
-/// past them on the heap; the JPEG standard allows 256 at most, and stb 2.28 refuses more.
-/// Every DHT segment is walked, before and between the scans of a progressive JPEG.
-std::string jpegDefect(const void* bytes, size_t size);
+struct EncodedImageSize {
+    int width = 0, height = 0;
+};
+/// The size a PNG (its IHDR chunk) or a JPEG (its frame header, read by libjpeg-turbo) declares,
+/// without decoding anything: to check limits before an image's worth of memory is allocated.
+/// nullopt for anything else, or a header that does not parse.
+std::optional<EncodedImageSize> encodedImageSize(const void* bytes, size_t size);
+struct DecodedImage {
+    ImageRGBA8 image; ///< empty when error is set
+    std::string error; ///< why it could not be decoded, or ""
+    std::string warning; ///< what libjpeg got past (corrupt data it skipped), or ""
+};
+/// Decodes a PNG (libpng) or a JPEG (libjpeg-turbo) to 8-bit RGBA, top row first. Palettes,
+/// greys and missing alpha are expanded; 16-bit PNG samples are rounded to 8 bits; no gamma or
+/// colour-profile conversion. A truncated file is an error, and so is a progressive JPEG of
+/// more than 500 scans (each scan is a pass over the image: thousands take minutes). Never
+/// throws; sizes are the caller's to limit first (encodedImageSize).
+DecodedImage decodePngOrJpeg(const void* bytes, size_t size);
 /// A Radiance .hdr or an OpenEXR file (any compression, DWAA/DWAB included; half or float
 /// channels; recognised by content, not extension). Alpha is 1 where the file has none.
 /// Negative and NaN values (lossy EXR compression rings below zero around bright sources)

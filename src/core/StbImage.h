@@ -1,5 +1,5 @@
 #pragma once
-// stb_image and stb_image_write, Debian's headers (libstb-dev), compiled into Specula by
+// stb_image (its Radiance .hdr decoder) and stb_image_write, Debian's headers (libstb-dev), compiled into Specula by
 // core/StbImage.cpp under names of its own and with hidden visibility. Include this, never
 // <stb/stb_image.h> directly.
 //
@@ -10,15 +10,10 @@
 // nothing but core/StbImage.cpp defines them, so the linker always takes that object, and
 // hidden, they are not exported for another library to bind to.
 // (Only the functions Specula calls are renamed; stb's others stay hidden in the same object.)
+// stb_image reads Radiance .hdr files only (STBI_ONLY_HDR in core/StbImage.cpp).
 #define stbi_failure_reason specula_stbi_failure_reason
 #define stbi_image_free specula_stbi_image_free
-#define stbi_info_from_callbacks specula_stbi_info_from_callbacks
-#define stbi_info_from_memory specula_stbi_info_from_memory
-#define stbi_is_16_bit_from_memory specula_stbi_is_16_bit_from_memory
 #define stbi_is_hdr_from_memory specula_stbi_is_hdr_from_memory
-#define stbi_load_16_from_memory specula_stbi_load_16_from_memory
-#define stbi_load_from_callbacks specula_stbi_load_from_callbacks
-#define stbi_load_from_memory specula_stbi_load_from_memory
 #define stbi_loadf_from_callbacks specula_stbi_loadf_from_callbacks
 #define stbi_write_png_to_func specula_stbi_write_png_to_func
 #define stbi_write_hdr_to_func specula_stbi_write_hdr_to_func

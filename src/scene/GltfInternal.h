@@ -25,6 +25,8 @@ using ImageFailures = std::map<int, std::string>;
 /// images) and the importer (bufferView images): what failed, and what the images may cost.
 struct ImageDecoding {
     ImageFailures failures;
+    /// What a decoder got past in an image it did decode (libjpeg's corrupt-data warnings).
+    ImageFailures warnings;
     LoadLimits limits;
     uint64_t textureBytes = 0; ///< decoded so far, RGBA8
     /// The first image over a limit, as the end of a message naming the file: the load fails with it.

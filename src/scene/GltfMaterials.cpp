@@ -5,7 +5,6 @@
 
 #include <cstring>
 
-#include "core/StbImage.h"
 #include <webp/decode.h>
 
 #include "core/ImageIO.h"
@@ -18,26 +17,30 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // Images
 
-/// Decodes an encoded image (PNG, JPEG, ...) to RGBA8 into `image`; returns why it failed, or "".
-/// Rows come out top first as Image wants, as long as nobody turns on stb's vertical flip (a
-/// process-wide setting; nothing in Specula does).
+/// Decodes an encoded image (PNG, JPEG, WebP) to RGBA8 into `image`; returns why it failed, or
+/// "". A warning from the decoder (corrupt data it got past) goes to decoding.warnings.
 /// An image over a limit sets `decoding.refusal` (the load fails) before anything is decoded:
-/// stb_image allocates the whole image from the header's size before it reads the pixels, so a
-/// few hundred forged bytes would otherwise cost gigabytes.
+/// the decoders allocate the whole image from the header's size before they read the pixels,
+/// so a few hundred forged bytes would otherwise cost gigabytes.
 std::string decodeRgba8(const unsigned char* bytes, size_t size, tinygltf::Image& image, int index,
                         ImageDecoding& decoding)
 {
     if (size == 0) return "the image data is empty";
     if (size > size_t(std::numeric_limits<int>::max())) return "the image data is too large";
-    const int length = int(size);
-    int width = 0, height = 0, channels = 0;
     // EXT_texture_webp's images (RIFF container, WEBP form), decoded with libwebp.
     const bool webp = size >= 12 && std::memcmp(bytes, "RIFF", 4) == 0 && std::memcmp(bytes + 8, "WEBP", 4) == 0;
-    // glTF's images are PNG and JPEG (WebP with EXT_texture_webp); stb_image's other decoders
-    // are not reached (fuzz_texture found its 16-bit PNM path reading past its buffer).
+    // glTF's images are PNG and JPEG (WebP with EXT_texture_webp).
     if (!webp && !isPngOrJpeg(bytes, size)) return "cannot decode it (not a PNG, JPEG or WebP image)";
-    if (const std::string defect = jpegDefect(bytes, size); !defect.empty()) return "cannot decode it (" + defect + ")";
-    if (webp ? WebPGetInfo(bytes, size, &width, &height) != 0 : stbi_info_from_memory(bytes, length, &width, &height, &channels) != 0) {
+    int width = 0, height = 0;
+    bool sized = false;
+    if (webp) {
+        sized = WebPGetInfo(bytes, size, &width, &height) != 0;
+    } else if (const std::optional<EncodedImageSize> header = encodedImageSize(bytes, size)) {
+        width = header->width;
+        height = header->height;
+        sized = true;
+    }
+    if (sized) {
         const LoadLimits& limits = decoding.limits;
         const uint64_t bytesNeeded = uint64_t(width) * uint64_t(height) * 4;
         if (width > limits.maxImageSize || height > limits.maxImageSize) {
@@ -60,25 +63,13 @@ std::string decodeRgba8(const unsigned char* bytes, size_t size, tinygltf::Image
         if (!data) return "cannot decode it (malformed WebP data)";
         pixels.assign(data, data + size_t(width) * size_t(height) * 4);
         WebPFree(data);
-    }
-    // stb_image also reads 16-bit PNGs through stbi_load, but truncates them (v >> 8); read
-    // them at 16 bits and round instead, so 8-bit values stored as 16-bit ones survive exactly.
-    if (!webp && stbi_is_16_bit_from_memory(bytes, length)) {
-        if (stbi_us* data = stbi_load_16_from_memory(bytes, length, &width, &height, &channels, 4)) {
-            pixels.resize(size_t(width) * size_t(height) * 4);
-            for (size_t i = 0; i < pixels.size(); ++i)
-                pixels[i] = uint8_t((uint32_t(data[i]) * 255u + 32767u) / 65535u);
-            stbi_image_free(data);
-        }
-    }
-    if (pixels.empty()) {
-        stbi_uc* data = stbi_load_from_memory(bytes, length, &width, &height, &channels, 4);
-        if (!data) {
-            const char* reason = stbi_failure_reason();
-            return fmt::format("cannot decode it ({})", reason ? reason : "unknown format");
-        }
-        pixels.assign(data, data + size_t(width) * size_t(height) * 4);
-        stbi_image_free(data);
+    } else {
+        DecodedImage decoded = decodePngOrJpeg(bytes, size);
+        if (!decoded.error.empty()) return fmt::format("cannot decode it ({})", decoded.error);
+        if (!decoded.warning.empty()) decoding.warnings[index] = decoded.warning;
+        width = decoded.image.width;
+        height = decoded.image.height;
+        pixels = std::move(decoded.image.pixels);
     }
     image.width = width;
     image.height = height;
@@ -138,15 +129,16 @@ void Importer::convertImages()
         Image image;
         const bool dataUri = source.uri.starts_with("data:");
         image.name = !source.name.empty() || dataUri ? source.name : source.uri;
+        const std::string label = source.uri.empty() || dataUri ? where : fmt::format("{} '{}'", where, source.uri);
         if (failure.empty() && source.width > 0 && source.height > 0 &&
             source.image.size() == size_t(source.width) * size_t(source.height) * 4) {
             image.width = source.width;
             image.height = source.height;
             image.pixels = std::move(source.image);
+            if (const auto it = mImages.warnings.find(int(i)); it != mImages.warnings.end())
+                warn("{}: {} (decoded anyway)", label, it->second);
         } else {
             if (failure.empty()) failure = "it has no pixels";
-            const std::string label =
-                source.uri.empty() || dataUri ? where : fmt::format("{} '{}'", where, source.uri);
             // Images no texture samples directly (the DDS ones of MSFT_texture_dds) cost nothing when missing.
             if (used[i]) {
                 warn("{}: {}; a neutral texture is used instead", label, failure);

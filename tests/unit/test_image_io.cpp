@@ -417,12 +417,13 @@ TEST(ImageIo, StbImageIsSpeculasOwnCopy)
     // list, and that was draco's: every image Specula decoded, and the fuzzers fuzzed, went
     // through draco's copy. core/StbImage.cpp now compiles Debian's headers into the program
     // under names of its own (core/StbImage.h): the function this executable calls must be in
-    // the executable itself.
+    // the executable itself. (It decodes Radiance files only now: PNG and JPEG are libpng's
+    // and libjpeg-turbo's.)
     Dl_info info{};
-    ASSERT_NE(dladdr(reinterpret_cast<void*>(&stbi_load_from_memory), &info), 0);
+    ASSERT_NE(dladdr(reinterpret_cast<void*>(&stbi_loadf_from_callbacks), &info), 0);
     ASSERT_NE(info.dli_fname, nullptr);
     std::error_code error;
-    EXPECT_TRUE(fs::equivalent(info.dli_fname, "/proc/self/exe", error)) << "stbi_load_from_memory is from " << info.dli_fname;
+    EXPECT_TRUE(fs::equivalent(info.dli_fname, "/proc/self/exe", error)) << "stbi_loadf_from_callbacks is from " << info.dli_fname;
     // And nothing this program links takes a stbi_ function from a shared library (binutils' nm
     // on its own dynamic symbol table: with libstb.so linked, 12 of them).
     FILE* pipe = ::popen("nm -D --undefined-only /proc/self/exe 2>&1", "r");
@@ -433,41 +434,6 @@ TEST(ImageIo, StbImageIsSpeculasOwnCopy)
     ASSERT_EQ(::pclose(pipe), 0) << imports;
     EXPECT_NE(imports.find("memcpy"), std::string::npos) << imports; // nm ran and listed the imports
     EXPECT_EQ(imports.find(" stbi"), std::string::npos) << imports;
-}
-
-TEST(ImageIo, JpegHuffmanTablesAreCheckedBeforeStbImage)
-{
-    // A baseline JPEG's tables pass; the fuzzer's (a table of over 256 codes) is refused by name,
-    // through readPng too (scene files' billboard images).
-    for (const char* good : {"small.jpg", "grey.jpg"}) {
-        const std::string bytes = readFile(fs::path(SPECULA_SOURCE_DIR) / "fuzz/seeds/texture" / good);
-        EXPECT_EQ(jpegDefect(bytes.data(), bytes.size()), "") << good;
-    }
-    std::string bad = readFile(fs::path(SPECULA_SOURCE_DIR) / "fuzz/seeds/texture/huffman-257.jpg");
-    EXPECT_NE(jpegDefect(bad.data(), bad.size()).find("Huffman table of"), std::string::npos);
-    // The fuzzer's second: the segment runs past the end of the file, and its last table's
-    // counts are the file's last 7 bytes and zeros (stb_image reads past the end as 0).
-    const std::string truncated = readFile(fs::path(SPECULA_SOURCE_DIR) / "fuzz/seeds/texture/huffman-truncated.jpg");
-    EXPECT_NE(jpegDefect(truncated.data(), truncated.size()).find("1062 codes"), std::string::npos)
-        << jpegDefect(truncated.data(), truncated.size());
-    TempDir dir;
-    const std::string message = errorOf([&] { readPng(dir.write("huffman.jpg", bad)); });
-    EXPECT_NE(message.find("Huffman table of"), std::string::npos) << message;
-    // A table of exactly 256 codes is the standard's largest: allowed.
-    std::string table = std::string("\xff\xd8\xff\xc4", 4);
-    const size_t length = 2 + 17 + 256;
-    table += char(length >> 8);
-    table += char(length & 0xff);
-    table += char(0x10);                       // class 1 (AC), table 0
-    table += std::string(15, char(0));         // no codes of 1..15 bits
-    table += char(0);                          // placeholder for 16 bits, below
-    table += std::string(256, char(1));
-    table[4 + 2 + 1 + 15] = char(255);         // 255 codes of 16 bits ...
-    table[4 + 2 + 1 + 14] = char(1);           // ... and one of 15: 256 in all
-    table += std::string("\xff\xd9", 2);
-    EXPECT_EQ(jpegDefect(table.data(), table.size()), "");
-    table[4 + 2 + 1 + 13] = char(1);           // 257
-    EXPECT_NE(jpegDefect(table.data(), table.size()).find("257 codes"), std::string::npos);
 }
 
 TEST(ImageIo, EmptyAndTinyInputsAreErrors)
