@@ -397,7 +397,14 @@ ImageFloat readExr(const fs::path& path, const std::vector<char>& data)
         if (!file.isComplete()) readFailed(path, "the file is truncated");
 
         std::vector<Imf::Rgba> pixels(size_t(width * height));
-        file.setFrameBuffer(Imf::ComputeBasePointer(pixels.data(), window), 1, size_t(width));
+        // OpenEXR addresses pixel (x, y) at base + x + y * width. Imf::ComputeBasePointer forms
+        // that base by pointer arithmetic, which overflows for a data window far from the
+        // origin (undefined behaviour: fuzz_exr, a window at 3.7e8; UBSan "pointer index
+        // expression overflowed"). Formed as an integer here, where wrapping is defined; every
+        // address OpenEXR then computes from it lies inside `pixels`.
+        const uint64_t origin = uint64_t(window.min.x + int64_t(window.min.y) * width) * sizeof(Imf::Rgba);
+        auto* base = reinterpret_cast<Imf::Rgba*>(reinterpret_cast<uintptr_t>(pixels.data()) - uintptr_t(origin));
+        file.setFrameBuffer(base, 1, size_t(width));
         file.readPixels(window.min.y, window.max.y);
 
         ImageFloat image;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -396,6 +397,51 @@ TEST(ImageIo, ExrAttributeSizeBeyondTheFileIsAnError)
     bytes.replace(exrAttributeSize(bytes, "channels"), 4, reinterpret_cast<const char*>(&huge), 4);
     const std::string message = errorOf([&] { readFloatImage(dir.write("huge.exr", bytes)); });
     EXPECT_NE(message.find("attribute channels declares 2147483647 bytes, more than the file holds"), std::string::npos) << message;
+}
+
+TEST(ImageIo, ExrDataWindowFarFromTheOriginIsRead)
+{
+    // fuzz_exr's finding (fuzz/seeds/exr/window-far-from-origin.exr): a data window whose corner
+    // is at (3.7e8, 3.7e8). OpenEXR's ComputeBasePointer, which the reader used, forms the frame
+    // buffer's base as pixels - x - y * width by pointer arithmetic, and that overflowed the
+    // address space (undefined behaviour; UBSan stops this test under make test-sanitize
+    // without the fix). The same 4 x 3 image moved there must read back as it was written.
+    TempDir dir;
+    const ImageFloat written = testPatternFloat(4, 3);
+    writeExr(dir / "a.exr", written);
+    const ImageFloat original = readFloatImage(dir / "a.exr");
+    std::string bytes = readFile(dir / "a.exr");
+    const int32_t x0 = 369098774, y0 = 370546198;
+    const int32_t window[4] = {x0, y0, x0 + 3, y0 + 2};
+    bytes.replace(exrAttributeSize(bytes, "dataWindow") + 4, 16, reinterpret_cast<const char*>(window), 16);
+    // Each chunk starts with its first scanline's y: the one chunk (3 lines, ZIP's 16 a chunk)
+    // is found through the offset table after the header (attributes: name, type, size, value).
+    size_t at = 8;
+    while (bytes[at] != '\0') {
+        at = bytes.find('\0', at) + 1; // name
+        at = bytes.find('\0', at) + 1; // type
+        int32_t size = 0;
+        std::memcpy(&size, bytes.data() + at, 4);
+        at += 4 + size_t(size);
+    }
+    uint64_t chunk = 0;
+    std::memcpy(&chunk, bytes.data() + at + 1, 8);
+    ASSERT_LT(chunk + 4, bytes.size());
+    int32_t firstLine = -1;
+    std::memcpy(&firstLine, bytes.data() + chunk, 4);
+    ASSERT_EQ(firstLine, 0);
+    std::memcpy(bytes.data() + chunk, &y0, 4);
+    const ImageFloat moved = readFloatImage(dir.write("far.exr", bytes));
+    EXPECT_EQ(moved.width, 4);
+    EXPECT_EQ(moved.height, 3);
+    EXPECT_EQ(moved.pixels, original.pixels);
+    // And the fuzzer's own file is an ordinary one-line answer.
+    const fs::path found = fs::path(SPECULA_SOURCE_DIR) / "fuzz/seeds/exr/window-far-from-origin.exr";
+    try {
+        readFloatImage(found);
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    }
 }
 
 TEST(ImageIo, ExrDataWindowOverTheLimitIsAnError)
