@@ -189,8 +189,7 @@ std::string decodePng(const unsigned char* bytes, size_t size, DecodedImage& out
         return decoder.message;
     }
     if (!info) png_error(png, "out of memory");
-    // Image sizes are limited by the callers (from the header, before anything is decoded).
-    png_set_user_limits(png, PNG_USER_WIDTH_MAX, PNG_USER_HEIGHT_MAX);
+    // Image sizes are the callers' to limit (from the header, before anything is decoded).
     png_set_read_fn(png, &decoder, pngRead);
     png_read_info(png, info);
     const png_uint_32 width = png_get_image_width(png, info), height = png_get_image_height(png, info);
