@@ -62,7 +62,9 @@ void Viewer::loadScene(const std::string& name)
               document.scene.meshes.size(), document.scene.triangleCount(), document.scene.lights.size(),
               defaultLights ? " (default rig)" : "");
 
+    Stopwatch upload;
     mRenderer->setScene(document.scene);
+    if (first) mStartup.sceneUpload = upload.elapsedMs();
     // The first scene starts where --animation and --time say (paused when --time is given); a
     // dropped one at its first animation's start, playing.
     const setup::AnimationChoice animation = first ? setup::resolveAnimation(document.scene, mOptions)
@@ -171,8 +173,13 @@ void Viewer::renderFrame(float deltaSeconds)
     mLastSize = glm::vec2(size);
     mRenderer->setGpuTiming(gpuTiming);
     const int errorsBefore = mDebug ? mDebug->errorCount() : 0;
+    // Gizmos are part of the editing overlay: hidden with the panels (H), the window shows
+    // the scene as `specula render` draws it.
+    Stopwatch frameClock;
+    render::FrameSettings frameSettings = mSettings;
+    frameSettings.gizmos = mSettings.gizmos && showUi;
     try {
-        mRenderer->render(view, mSettings);
+        mRenderer->render(view, frameSettings);
     } catch (const gl::ShaderError& e) {
         // A program compiled on first use (a pass or shading model turned on after a reload)
         // from a file that does not compile: show it and keep the last frame on screen; turning
@@ -184,8 +191,12 @@ void Viewer::renderFrame(float deltaSeconds)
     }
     mRenderer->present(size.x, size.y);
     if (mFirstFrame) {
+        mStartup.firstRender = frameClock.elapsedMs();
         mStartup.firstFrame = msSinceProcessStart();
         mFirstFrame = false;
+        log::debug("first frame at {:.0f} ms: context {:.0f} ms, scene load {:.0f}, upload {:.0f}, environment {:.0f}, render {:.0f}",
+                   mStartup.firstFrame, mStartup.context, mStartup.sceneLoad, mStartup.sceneUpload, mStartup.environmentBake,
+                   mStartup.firstRender);
     }
     std::rotate(frameTimes.begin(), frameTimes.begin() + 1, frameTimes.end());
     frameTimes.back() = deltaSeconds * 1000.0f;

@@ -29,6 +29,8 @@ struct StartupTimes {
     double context = 0.0;
     double sceneLoad = 0.0;
     double environmentBake = 0.0;
+    double sceneUpload = 0.0;   ///< the scene's meshes and textures to the GPU (Renderer::setScene)
+    double firstRender = 0.0;   ///< the first frame's render and present (programs compiled on first use)
     double firstFrame = 0.0; ///< since the process started
 };
 

@@ -104,8 +104,9 @@ void statisticsPanel(Viewer& viewer)
     }
     if (!stats.passes.empty()) ImGui::Text("  %-16s %7.3f ms", "total", total);
     const StartupTimes& s = viewer.startup();
-    ImGui::Text("start-up: context %.0f ms, scene load %.0f ms,", s.context, s.sceneLoad);
-    ImGui::Text("  environment bake %.0f ms, first frame at %.0f ms", s.environmentBake, s.firstFrame);
+    ImGui::Text("start-up: context %.0f ms, scene load %.0f ms, upload %.0f ms,", s.context, s.sceneLoad, s.sceneUpload);
+    ImGui::Text("  environment bake %.0f ms, first render %.0f ms,", s.environmentBake, s.firstRender);
+    ImGui::Text("  first frame at %.0f ms", s.firstFrame);
 }
 
 void scenePanel(Viewer& viewer)

@@ -145,6 +145,28 @@ TEST(CliViewer, FramesThenScreenshot)
     EXPECT_NE(r.err.find("viewer: 3 frames"), std::string::npos) << r.err;
 }
 
+// With the panels hidden the window shows the scene as `specula render` draws it: the light
+// gizmos (an editing overlay) go with the panels. Shown, they mark the demo's lights.
+TEST(CliViewer, HiddenPanelsShowTheRenderedImageWithoutGizmos)
+{
+    ASSERT_TRUE(haveDisplay()) << "no display: run through scripts/test.sh, which uses Xvfb (a window test must not skip)";
+    const std::string dir = tempDir("viewer-hidden-ui");
+    const std::string size = " --width 240 --height 135";
+    const auto rendered = runCli("render --camera 0 -o " + dir + "/render.png" + size);
+    ASSERT_EQ(rendered.exitCode, 0) << rendered.err;
+    const auto hidden = runCli("view --camera 0 --hide-ui --frames 2 --screenshot " + dir + "/hidden.png" + size);
+    ASSERT_EQ(hidden.exitCode, 0) << hidden.err;
+    const auto shown = runCli("view --camera 0 --frames 2 --screenshot " + dir + "/shown.png" + size);
+    ASSERT_EQ(shown.exitCode, 0) << shown.err;
+    const auto reference = specula::readPng(dir + "/render.png");
+    const auto withoutUi = specula::readPng(dir + "/hidden.png");
+    const auto withUi = specula::readPng(dir + "/shown.png");
+    ASSERT_EQ(withoutUi.width, reference.width);
+    ASSERT_EQ(withUi.width, reference.width);
+    EXPECT_LT(meanDifference(withoutUi, reference), 0.05); // the same frame (levels of 255)
+    EXPECT_GT(meanDifference(withUi, reference), 0.05);    // the gizmos' discs and rods
+}
+
 // The acceptance walkthrough, headless and small (docs/viewer-walkthrough.txt is the
 // full-size one that made the pictures in docs/viewer.md): orbit, a coloured spot light, a
 // shading model switched and switched back, bloom turned up with its pass timed, the panels

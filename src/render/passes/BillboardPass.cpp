@@ -337,8 +337,10 @@ void BillboardPass::setScene(const scene::Scene& scene)
         p.groups.push_back(g);
     }
     const LightGizmos gizmos = makeLightGizmos({}, {});
-    p.gizmoDiscs = Impl::describe(gizmos.discs, p.builtin(gizmos.discs.sprite));
-    p.gizmoRods = Impl::describe(gizmos.rods, p.builtin(gizmos.rods.sprite));
+    // Their sprites are made when gizmos are first drawn: a frame without them makes none
+    // (each texture's mipmaps cost a driver shader compile on llvmpipe).
+    p.gizmoDiscs = Impl::describe(gizmos.discs, nullptr);
+    p.gizmoRods = Impl::describe(gizmos.rods, nullptr);
 
     // The dynamic part holds the blended billboards and, separately after them, the gizmos of
     // the scene's lights; drawBlended grows it when lights are added.
@@ -379,6 +381,8 @@ size_t BillboardPass::drawBlended(gl::State& state, const View& view, int viewpo
     LightGizmos made;
     if (gizmos) {
         made = makeLightGizmos(gizmoLights->all(), p.sceneBounds, selectedLight);
+        if (!p.gizmoDiscs.texture) p.gizmoDiscs.texture = p.builtin(made.discs.sprite);
+        if (!p.gizmoRods.texture) p.gizmoRods.texture = p.builtin(made.rods.sprite);
         p.reserveDynamic(p.blended.size() + made.rods.billboards.size() + made.discs.billboards.size()); // before begin() binds it
     }
     gl::DebugGroup debugGroup("billboards (blended)");

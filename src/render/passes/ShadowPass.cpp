@@ -281,6 +281,12 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
     std::vector<int> dropped;
     const std::vector<ShadowCandidate> chosen = chooseShadowed(candidates, s.maxLights, s.maxDirectional, &dropped);
 
+    stats.dropped = int(dropped.size());
+    if (chosen.empty()) { // no light casts: no atlas is made (a 64 MiB clear at high quality)
+        r.clearSlots(lights);
+        return {};
+    }
+
     // Tiles: cascades first (they cover the whole view), then by importance, halving a
     // light's tiles until they fit.
     r.ensureAtlas(frame.state(), q.atlas);
