@@ -15,16 +15,25 @@ vec3 toEnvironment(vec3 worldDirection)
     return mat3(environment.worldToEnvironment) * worldDirection;
 }
 
+#if defined(IBL_SOURCE_COUNT)
 // Irradiance E(n), lux, at environment-space normal n: the cube (the environment less its
 // brightest parts) plus those parts summed here, exactly — a cube's bilinear filter would round
-// the kink of max(0, n·d) at a bright source's terminator.
+// the kink of max(0, n·d) at a bright source's terminator. The parts are constants of the
+// program (IBL_SOURCE_COUNT, IBL_SOURCE_DIRECTIONS and IBL_SOURCE_FLUXES, written by
+// render/passes/ForwardPass for the environment on screen, which recompiles when it changes):
+// folded into the code they cost half of what reading them from a uniform block does on
+// llvmpipe, whose gallivm loads every block member per lane (docs/performance.md).
 vec3 irradianceCube(vec3 n)
 {
     vec3 e = textureLod(uIrradiance, n, 0.0).rgb;
-    for (int i = 0; i < SPECULA_IBL_BRIGHT_SOURCES; ++i)
-        e += environment.brightFlux[i].rgb * max(dot(n, environment.brightDirection[i].xyz), 0.0);
+#if IBL_SOURCE_COUNT > 0
+    const vec3 directions[IBL_SOURCE_COUNT] = vec3[](IBL_SOURCE_DIRECTIONS); // environment space
+    const vec3 fluxes[IBL_SOURCE_COUNT] = vec3[](IBL_SOURCE_FLUXES);         // lux at normal incidence
+    for (int i = 0; i < IBL_SOURCE_COUNT; ++i) e += fluxes[i] * max(dot(n, directions[i]), 0.0);
+#endif
     return e;
 }
+#endif
 
 // Irradiance E(n) from the order-2 SH of the radiance (Ramamoorthi & Hanrahan 2001, eq. 8,
 // 13): the clamped-cosine convolution scales band l by A_0 = pi, A_1 = 2pi/3, A_2 = pi/4.

@@ -2,6 +2,9 @@
 
 #include <array>
 
+#include <fmt/format.h>
+
+#include "shading/EnvironmentMap.h"
 #include "shaders/shared/MaterialData.h"
 #include "shaders/shared/ShadowData.h"
 
@@ -214,6 +217,25 @@ std::string ForwardVariant::name() const
     std::string out;
     for (const std::string& d : defines()) out += d + ";";
     return out;
+}
+
+std::vector<std::string> irradianceSourceDefines(std::span<const IrradianceSource> sources)
+{
+    auto list = [&](glm::vec3 IrradianceSource::*field) {
+        std::string out;
+        for (const IrradianceSource& source : sources) {
+            const glm::vec3 v = source.*field;
+            // Nine significant digits give back every float exactly.
+            out += fmt::format("{}vec3({:.9g}, {:.9g}, {:.9g})", out.empty() ? "" : ", ", v.x, v.y, v.z);
+        }
+        return out;
+    };
+    std::vector<std::string> defines{fmt::format("IBL_SOURCE_COUNT {}", sources.size())};
+    if (!sources.empty()) {
+        defines.push_back("IBL_SOURCE_DIRECTIONS " + list(&IrradianceSource::direction));
+        defines.push_back("IBL_SOURCE_FLUXES " + list(&IrradianceSource::flux));
+    }
+    return defines;
 }
 
 } // namespace specula::render

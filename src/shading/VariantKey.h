@@ -41,6 +41,12 @@ enum class IblVariant : uint8_t { None, SplitSum, Importance };
 /// Every row, in the order the defines are emitted.
 std::span<const VariantDefine> forwardVariantTable();
 
+struct IrradianceSource; // shading/EnvironmentMap.h
+
+/// The forward programs' IBL_SOURCE_COUNT, IBL_SOURCE_DIRECTIONS and IBL_SOURCE_FLUXES: an
+/// environment's bright sources as constants of the code (ibl/ibl.glsl), each float exactly.
+std::vector<std::string> irradianceSourceDefines(std::span<const IrradianceSource> sources);
+
 struct ForwardVariant {
     uint64_t key = 0;
 

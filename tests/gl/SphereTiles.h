@@ -34,8 +34,7 @@ inline const glm::vec3 kEye(0.0f, 0.0f, 1000.0f);
 
 // Unit spheres in a row, one per material, seen by an orthographic camera looking down -Z,
 // no lights.
-inline SphereRender renderSpheres(render::Renderer& renderer, const std::vector<scene::Material>& materials,
-                           const render::FrameSettings& base = {})
+inline void setSpheres(render::Renderer& renderer, const std::vector<scene::Material>& materials)
 {
     scene::Scene s;
     const int count = int(materials.size());
@@ -43,6 +42,11 @@ inline SphereRender renderSpheres(render::Renderer& renderer, const std::vector<
         scene::addShape(s, scene::makeUvSphere(1.0f, 128, 64), materials[size_t(i)],
                         glm::translate(glm::mat4(1.0f), glm::vec3(sphereCentreX(i, count), 0.0f, 0.0f)), "sphere");
     renderer.setScene(s);
+}
+
+// The `count` spheres setSpheres put in the renderer's scene, rendered again.
+inline SphereRender renderSphereTiles(render::Renderer& renderer, int count, const render::FrameSettings& base = {})
+{
     render::View view;
     view.view = glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0), glm::vec3(0, 1, 0));
     view.projection = glm::ortho(-kHalfExtent * float(count), kHalfExtent * float(count), -kHalfExtent, kHalfExtent, 0.1f, 20.0f);
@@ -54,6 +58,13 @@ inline SphereRender renderSpheres(render::Renderer& renderer, const std::vector<
     settings.tonemap = render::Tonemap::None;
     renderer.render(view, settings);
     return {renderer.readRadiance(), view.projection * view.view};
+}
+
+inline SphereRender renderSpheres(render::Renderer& renderer, const std::vector<scene::Material>& materials,
+                           const render::FrameSettings& base = {})
+{
+    setSpheres(renderer, materials);
+    return renderSphereTiles(renderer, int(materials.size()), base);
 }
 
 // One unit sphere at the origin.

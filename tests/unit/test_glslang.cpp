@@ -12,6 +12,7 @@
 
 #include "gl/Program.h"
 #include "gl/ShaderSource.h"
+#include "shading/EnvironmentMap.h"
 #include "shading/VariantKey.h"
 
 namespace fs = std::filesystem;
@@ -74,6 +75,15 @@ std::vector<Variant> variants()
                                "BRDF_G_NEUMANN", "BRDF_G_KELEMEN", "BRDF_G_COOK_TORRANCE", "BRDF_G_IMPLICIT", "BRDF_F_SCHLICK_SG"})
         out.push_back({"ibl/dfg.comp", {define}});
     out.push_back({"ibl/dfg.comp", {"BRDF_D_BLINN_PHONG", "BRDF_G_KELEMEN", "BRDF_F_SCHLICK_SG"}});
+    // The forward programs take the environment's bright sources as constants: none, or some
+    // (render/passes/ForwardPass, ibl/ibl.glsl), with the other defines as above.
+    const std::vector<specula::render::IrradianceSource> sources{{{0.0f, 1.0f, 0.0f}, {1.5f, 1.25f, 1e-5f}},
+                                                                 {{0.6f, 0.0f, -0.8f}, {3e4f, 2e4f, 1e4f}}};
+    for (Variant& v : out) {
+        if (v.path != "forward/pbr.frag") continue;
+        const auto defines = specula::render::irradianceSourceDefines((&v - out.data()) % 2 ? std::span(sources) : std::span(sources).first(0));
+        v.defines.insert(v.defines.end(), defines.begin(), defines.end());
+    }
     return out;
 }
 

@@ -16,6 +16,7 @@
 #include "render/passes/LightCullPass.h"
 #include "render/passes/ShadowPass.h"
 #include "shaders/shared/Bindings.h"
+#include "shading/VariantKey.h"
 
 namespace specula::render {
 namespace {
@@ -61,7 +62,8 @@ void setEnvironmentField(gl::UniformBuffer<shared::EnvironmentData>& environment
 }
 
 /// Uploads what changed of the environment block: the view every frame the camera moves, the
-/// rotation and parameters when the settings change, the SH and the bright sources when the environment does.
+/// rotation and parameters when the settings change, the SH when the environment does (its
+/// bright sources are constants of the forward programs: ForwardPass::Impl::updateSources).
 void updateEnvironment(const FrameContext& frame)
 {
     const ImageBasedLighting& ibl = frame.stores.ibl;
@@ -72,13 +74,6 @@ void updateEnvironment(const FrameContext& frame)
     glm::vec4 sh[9];
     for (size_t i = 0; i < 9; ++i) sh[i] = glm::vec4(ibl.sh()[i], 0.0f);
     setEnvironmentField(environment, &EnvironmentData::sh, sh);
-    glm::vec4 brightDirection[SPECULA_IBL_BRIGHT_SOURCES] = {}, brightFlux[SPECULA_IBL_BRIGHT_SOURCES] = {};
-    for (size_t i = 0; i < ibl.brightSources().size() && i < SPECULA_IBL_BRIGHT_SOURCES; ++i) {
-        brightDirection[i] = glm::vec4(ibl.brightSources()[i].direction, 0.0f);
-        brightFlux[i] = glm::vec4(ibl.brightSources()[i].flux, 0.0f);
-    }
-    setEnvironmentField(environment, &EnvironmentData::brightDirection, brightDirection);
-    setEnvironmentField(environment, &EnvironmentData::brightFlux, brightFlux);
     setEnvironmentField(environment, &EnvironmentData::worldToEnvironment,
                         glm::mat4(environmentRotation(-settings.environment.rotationDegrees)));
     setEnvironmentField(environment, &EnvironmentData::inverseViewProjection,
@@ -98,6 +93,24 @@ struct ForwardPass::Impl {
     SkyboxPass skybox;
     ShadowVariant shadows;                       // this frame's SHADOWS variants
     bool allLights = false;                      // this frame's LIGHTS_ALL
+    // The environment's bright sources, written into every forward program as constants
+    // (ibl/ibl.glsl's IBL_SOURCE_*): the programs are made again when they change.
+    std::vector<IrradianceSource> sources;
+    std::vector<std::string> sourceDefines{"IBL_SOURCE_COUNT 0"};
+
+    void updateSources(const FrameContext& frame)
+    {
+        static const std::vector<IrradianceSource> none;
+        const std::vector<IrradianceSource>& all = frame.stores.ibl.hasEnvironment() ? frame.stores.ibl.brightSources() : none;
+        const size_t count = std::min<size_t>(all.size(), SPECULA_IBL_BRIGHT_SOURCES);
+        const bool same = count == sources.size() && std::equal(sources.begin(), sources.end(), all.begin(), [](const auto& a, const auto& b) {
+            return a.direction == b.direction && a.flux == b.flux;
+        });
+        if (same) return;
+        sources.assign(all.begin(), all.begin() + std::ptrdiff_t(count));
+        sourceDefines = irradianceSourceDefines(sources);
+        programs.clear(); // made with the old constants; this frame's materials take new ones
+    }
 
     // The transparent phase's programs and sampler (made on first use).
     struct CopyProgram {
@@ -149,7 +162,9 @@ struct ForwardPass::Impl {
         auto it = programs.find(variant.key);
         if (it != programs.end()) return it->second;
         ForwardProgram p;
-        p.program = gl::Program({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = variant.defines(),
+        std::vector<std::string> defines = variant.defines();
+        defines.insert(defines.end(), sourceDefines.begin(), sourceDefines.end());
+        p.program = gl::Program({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = defines,
                                  .label = "forward " + variant.name()});
         p.model = p.program.uniformLocation("uModel");
         p.normalMatrix = p.program.uniformLocation("uNormalMatrix");
@@ -181,6 +196,7 @@ const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext
     r.shadows = shadows;
     r.allLights = allLights;
     r.materialPrograms.clear();
+    r.updateSources(frame);
     r.skybox.prepare();
     const GpuScene* scene = frame.stores.scene.get();
     if (!scene) return r.materialPrograms;
