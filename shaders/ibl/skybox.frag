@@ -1,5 +1,6 @@
 #version 450 core
-// The environment behind the scene: the base cube (sharp) or a prefiltered level (blurred).
+// The environment behind the scene: the base cube (sharp) or, with SKYBOX_BLURRED, a
+// prefiltered level (render/passes/SkyboxPass).
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
 #include "../common/math.glsl"
@@ -15,6 +16,10 @@ void main()
 {
     vec3 direction = normalize(vFarPoint.xyz / vFarPoint.w - frame.cameraPosition.xyz);
     vec3 d = toEnvironment(direction);
-    vec3 radiance = environment.params.z < 0.0 ? textureLod(uSky, d, 0.0).rgb : textureLod(uPrefiltered, d, environment.params.z).rgb;
+#if defined(SKYBOX_BLURRED)
+    vec3 radiance = textureLod(uPrefiltered, d, environment.params.z).rgb; // params.z: the level, >= 0
+#else
+    vec3 radiance = textureLod(uSky, d, 0.0).rgb;
+#endif
     outColor = vec4(min(radiance * environment.params.x, vec3(65504.0)), 1.0);
 }

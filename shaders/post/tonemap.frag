@@ -33,6 +33,12 @@ vec3 fetchRadiance(ivec2 p)
 }
 #endif
 
+// render/passes/TonemapPass makes a program per operator (TONEMAP_OPERATOR, a SPECULA_TONEMAP_*
+// constant): gallivm runs every operator of a branch on a uniform. This file alone reads the frame's.
+#ifndef TONEMAP_OPERATOR
+#define TONEMAP_OPERATOR frame.options.x
+#endif
+
 layout(location = 0) out vec4 outColor;
 
 void main()
@@ -42,7 +48,7 @@ void main()
     exposure *= exposureState.value.y; // frame.exposure.x is then the compensation, 2^EV
 #endif
     vec3 hdr = fetchRadiance(ivec2(gl_FragCoord.xy)) * exposure;
-    vec3 mapped = tonemap(max(hdr, vec3(0.0)), frame.options.x, frame.exposure.y);
+    vec3 mapped = tonemap(max(hdr, vec3(0.0)), TONEMAP_OPERATOR, frame.exposure.y);
 #if defined(ENCODE_SRGB)
     // Into FXAA's 8-bit UNORM input, encoded here with the same curve: FXAA works on
     // perceptual values, and reading UNORM is cheaper than decoding sRGB at every fetch.

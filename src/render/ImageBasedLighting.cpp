@@ -354,9 +354,17 @@ const gl::Texture& ImageBasedLighting::irradiance() const { return mImpl->irradi
 const std::vector<IrradianceSource>& ImageBasedLighting::brightSources() const { return mImpl->bright; }
 void ImageBasedLighting::setLutCacheDirectory(const fs::path& directory) { mImpl->lutCacheDirectory = directory; }
 
-BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const EnvironmentMap& map, const BakeSettings& requested,
+BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const EnvironmentMap& original, const BakeSettings& requested,
                                               const fs::path& cacheDirectory)
 {
+    // The bake uploads the map as one 2D texture: wider or taller than the GL limit, it is
+    // downscaled first (a GL error otherwise).
+    const int maxSize = gl::maxTextureSize();
+    const EnvironmentMap fitted = original.width > maxSize || original.height > maxSize ? downscaledToFit(original, maxSize) : EnvironmentMap{};
+    const EnvironmentMap& map = fitted.width > 0 ? fitted : original;
+    if (&map == &fitted)
+        log::warn("the environment is {}x{}, larger than this GPU's texture limit of {}; downscaled to {}x{}", original.width,
+                  original.height, maxSize, map.width, map.height);
     const BakeSettings settings = requested.resolvedFor(map.width);
     Impl& r = *mImpl;
     Stopwatch watch;

@@ -13,6 +13,7 @@
 #include "render/FrameContext.h"
 #include "render/GpuScene.h"
 #include "render/graph/GlGraphBackend.h"
+#include "render/passes/TonemapPass.h"
 #include "render/pipelines/FramePipelines.h"
 #include "shading/VariantKey.h"
 #include "shaders/shared/Bindings.h"
@@ -69,19 +70,6 @@ FrameStores::FrameStores()
 FrameStores::~FrameStores() = default;
 
 namespace {
-
-uint32_t tonemapId(Tonemap t)
-{
-    switch (t) {
-    case Tonemap::None: return SPECULA_TONEMAP_NONE;
-    case Tonemap::Reinhard: return SPECULA_TONEMAP_REINHARD;
-    case Tonemap::ReinhardExtended: return SPECULA_TONEMAP_REINHARD_EXT;
-    case Tonemap::Aces: return SPECULA_TONEMAP_ACES;
-    case Tonemap::Neutral: return SPECULA_TONEMAP_NEUTRAL;
-    case Tonemap::Agx: return SPECULA_TONEMAP_AGX;
-    }
-    return SPECULA_TONEMAP_NONE;
-}
 
 /// What a frame actually runs: a debug view needs its pass on.
 FrameSettings effectiveSettings(const FrameSettings& requested)

@@ -83,6 +83,30 @@ EnvironmentMap loadEnvironmentMap(const std::filesystem::path& path)
     return map;
 }
 
+EnvironmentMap downscaledToFit(const EnvironmentMap& map, int maxSize)
+{
+    if (map.width <= maxSize && map.height <= maxSize) return map;
+    const double scale = double(maxSize) / double(std::max(map.width, map.height));
+    EnvironmentMap out;
+    out.width = std::clamp(int(map.width * scale), 1, maxSize);
+    out.height = std::clamp(int(map.height * scale), 1, maxSize);
+    out.key = fmt::format("{}-fit{}x{}", map.key, out.width, out.height);
+    out.texels.resize(size_t(out.width) * size_t(out.height));
+    for (int y = 0; y < out.height; ++y) {
+        const int y0 = int(int64_t(y) * map.height / out.height);
+        const int y1 = std::max(y0 + 1, int(int64_t(y + 1) * map.height / out.height));
+        for (int x = 0; x < out.width; ++x) {
+            const int x0 = int(int64_t(x) * map.width / out.width);
+            const int x1 = std::max(x0 + 1, int(int64_t(x + 1) * map.width / out.width));
+            glm::dvec3 sum(0.0);
+            for (int sy = y0; sy < y1; ++sy)
+                for (int sx = x0; sx < x1; ++sx) sum += glm::dvec3(map.at(sx, sy));
+            out.texels[size_t(y) * size_t(out.width) + size_t(x)] = glm::vec3(sum / double(int64_t(y1 - y0) * (x1 - x0)));
+        }
+    }
+    return out;
+}
+
 EnvironmentMap constantEnvironment(const glm::vec3& radiance)
 {
     EnvironmentMap map;

@@ -50,6 +50,10 @@ glm::mat3 environmentRotation(float degrees);
 /// Reads .hdr or .exr (negatives clamped to 0, 32-bit float kept); key = hash of the file bytes.
 EnvironmentMap loadEnvironmentMap(const std::filesystem::path& path);
 EnvironmentMap constantEnvironment(const glm::vec3& radiance);
+/// `map` box-filtered down to fit `maxSize` on both sides, keeping its aspect ratio (each output
+/// texel the mean radiance of the source texels its footprint covers, at least one); the same
+/// map when it fits. Its key names the new size (the bake cache keeps them apart).
+EnvironmentMap downscaledToFit(const EnvironmentMap& map, int maxSize);
 EnvironmentMap proceduralSky(const SkyParams& params = {}, int width = 512);
 
 /// Order-2 (9-coefficient) real spherical harmonics of the radiance, projected with the exact

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "CliRunner.h"
+#include "core/ImageIO.h"
 
 namespace fs = std::filesystem;
 using specula::test::runCli;
@@ -126,4 +127,22 @@ TEST(CliEnvironment, SunExtractionAndImportanceSampledSpecular)
         EXPECT_EQ(r.errorLines(), 1) << r.err;
         EXPECT_FALSE(fs::exists(dir + "/bad.png"));
     }
+}
+
+// An environment wider than the GPU's texture limit (16384 on llvmpipe; the fuzzer's OpenEXR
+// file was 5,373,953 × 2) is downscaled with a warning before the bake uploads it, not a GL
+// error: it renders, exit 0.
+TEST(CliEnvironment, EnvironmentWiderThanTheTextureLimitIsDownscaled)
+{
+    const std::string dir = tempDir("wideenv");
+    specula::ImageFloat wide;
+    wide.width = 16400;
+    wide.height = 2;
+    wide.pixels.assign(size_t(wide.width) * size_t(wide.height) * 4, 0.5f);
+    specula::writeHdr(dir + "/wide.hdr", wide);
+    const auto r = runCli("render --env " + dir + "/wide.hdr --no-cache --width 32 --height 18 -o " + dir + "/out.png");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("the environment is 16400x2, larger than this GPU's texture limit of"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("OpenGL reported"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(dir + "/out.png"));
 }

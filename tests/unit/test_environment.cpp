@@ -183,3 +183,25 @@ TEST(Environment, IrradianceMatchesBruteForceOnEveryHdr)
         EXPECT_LT(worst, name == "park_1k.hdr" ? 0.02 : 0.01) << name << " at " << worstAt;
     }
 }
+
+// downscaledToFit: the same map when it fits; else the aspect ratio kept within the limit and
+// each texel its footprint's mean (a map of two halves, 3 and 1, keeps them and its mean).
+TEST(Environment, DownscaledToFitAveragesFootprints)
+{
+    EnvironmentMap map;
+    map.width = 1000;
+    map.height = 10;
+    map.key = "halves";
+    for (int y = 0; y < map.height; ++y)
+        for (int x = 0; x < map.width; ++x) map.texels.push_back(glm::vec3(x < 500 ? 3.0f : 1.0f, 2.0f, float(y)));
+    EXPECT_EQ(downscaledToFit(map, 1000).width, 1000);
+    const EnvironmentMap fitted = downscaledToFit(map, 100);
+    ASSERT_EQ(fitted.width, 100);
+    ASSERT_EQ(fitted.height, 1);
+    EXPECT_NE(fitted.key, map.key);
+    for (int x = 0; x < 100; ++x) {
+        EXPECT_FLOAT_EQ(fitted.at(x, 0).x, x < 50 ? 3.0f : 1.0f);
+        EXPECT_FLOAT_EQ(fitted.at(x, 0).y, 2.0f);
+        EXPECT_FLOAT_EQ(fitted.at(x, 0).z, 4.5f); // the mean of rows 0..9
+    }
+}

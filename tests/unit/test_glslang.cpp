@@ -53,7 +53,8 @@ std::vector<Variant> variants()
     out.push_back({"forward/pbr.frag", {"SHADING_DOOM", "DOOM_INDEXED", "HAS_BASE_COLOR_TEXTURE", "ALPHA_BLEND", "VERTEX_COLOR"}});
     out.push_back({"billboard/billboard.vert", {"DOOM_INDEXED"}});
     out.push_back({"billboard/billboard.frag", {"DOOM_INDEXED"}});
-    out.push_back({"post/tonemap.frag", {"MSAA_SAMPLES 4"}});
+    out.push_back({"post/tonemap.frag", {"MSAA_SAMPLES 4", "TONEMAP_OPERATOR 5u"}});
+    out.push_back({"ibl/skybox.frag", {"SKYBOX_BLURRED"}});
     // Post-processing variants (render/BloomPass, SsaoPass, Renderer's tone mapper for FXAA).
     out.push_back({"post/tonemap.frag", {"MSAA_SAMPLES 4", "AUTO_EXPOSURE", "ENCODE_SRGB"}});
     out.push_back({"post/bloom_downsample.comp", {"FIRST_LEVEL"}});

@@ -197,7 +197,7 @@ const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext
     r.allLights = allLights;
     r.materialPrograms.clear();
     r.updateSources(frame);
-    r.skybox.prepare();
+    r.skybox.prepare(frame);
     const GpuScene* scene = frame.stores.scene.get();
     if (!scene) return r.materialPrograms;
     for (const MaterialBinding& m : scene->materials()) {

@@ -9,13 +9,14 @@ struct FrameContext;
 
 class SkyboxPass {
 public:
-    /// Compiles the program now rather than on first use.
-    void prepare();
+    /// Compiles this frame's program now rather than on first use.
+    void prepare(const FrameContext& frame);
     /// Draws the sky into the bound target when the frame has an environment and shows it.
     void draw(const FrameContext& frame);
 
 private:
-    gl::Program mProgram;
+    gl::Program& program(const FrameContext& frame);
+    gl::Program mPrograms[2]; ///< sharp (the base cube), blurred (a prefiltered level)
 };
 
 } // namespace specula::render

@@ -7,14 +7,30 @@
 #include "render/graph/GlGraphBackend.h"
 #include "render/passes/Fullscreen.h"
 #include "shaders/shared/Bindings.h"
+#include "shaders/shared/FrameData.h"
 
 namespace specula::render {
 
-gl::Program& TonemapPass::program(int samples, bool automaticExposure, bool encodeSrgb)
+uint32_t tonemapId(Tonemap t)
 {
-    gl::Program& program = mPrograms[4 * samples + (automaticExposure ? 1 : 0) + (encodeSrgb ? 2 : 0)];
+    switch (t) {
+    case Tonemap::None: return SPECULA_TONEMAP_NONE;
+    case Tonemap::Reinhard: return SPECULA_TONEMAP_REINHARD;
+    case Tonemap::ReinhardExtended: return SPECULA_TONEMAP_REINHARD_EXT;
+    case Tonemap::Aces: return SPECULA_TONEMAP_ACES;
+    case Tonemap::Neutral: return SPECULA_TONEMAP_NEUTRAL;
+    case Tonemap::Agx: return SPECULA_TONEMAP_AGX;
+    }
+    return SPECULA_TONEMAP_NONE;
+}
+
+gl::Program& TonemapPass::program(int samples, bool automaticExposure, bool encodeSrgb, uint32_t tonemap)
+{
+    gl::Program& program = mPrograms[(int(tonemap) * 64 + samples) * 4 + (automaticExposure ? 1 : 0) + (encodeSrgb ? 2 : 0)];
     if (!program) {
-        std::vector<std::string> defines;
+        // The operator as a constant: gallivm (llvmpipe) runs every operator of a branch on a
+        // uniform, a third of this pass there (docs/performance.md).
+        std::vector<std::string> defines{"TONEMAP_OPERATOR " + std::to_string(tonemap) + "u"};
         if (samples > 1) defines.push_back("MSAA_SAMPLES " + std::to_string(samples));
         if (automaticExposure) defines.push_back("AUTO_EXPOSURE");
         if (encodeSrgb) defines.push_back("ENCODE_SRGB");
@@ -27,7 +43,7 @@ gl::Program& TonemapPass::program(int samples, bool automaticExposure, bool enco
 void TonemapPass::addTo(FrameGraph& graph, const FrameContext& frame, GraphTexture input, int samples, GraphBuffer exposure,
                         GraphTexture target, bool encodeSrgb)
 {
-    gl::Program& tonemap = program(samples, bool(exposure), encodeSrgb);
+    gl::Program& tonemap = program(samples, bool(exposure), encodeSrgb, tonemapId(frame.settings.tonemap));
     graph.addPass(
         samples > 1 ? "resolve+tonemap" : "tonemap",
         [&](FrameGraph::Builder& b) {

@@ -3,14 +3,19 @@
 // Reading a multisampled frame it resolves as it reads ("resolve+tonemap": one pass instead of
 // a blit and a pass); with automatic exposure it reads the exposure state the exposure pass left
 // on the GPU. Into the sRGB target GL encodes; into FXAA's UNORM input the shader does.
+#include <cstdint>
 #include <map>
 
 #include "gl/Program.h"
 #include "render/graph/FrameGraph.h"
+#include "shading/Tonemap.h"
 
 namespace specula::render {
 
 struct FrameContext;
+
+/// The operator's SPECULA_TONEMAP_* id (shaders/shared/FrameData.h).
+uint32_t tonemapId(Tonemap t);
 
 class TonemapPass {
 public:
@@ -20,8 +25,8 @@ public:
                GraphTexture target, bool encodeSrgb);
 
 private:
-    gl::Program& program(int samples, bool automaticExposure, bool encodeSrgb);
-    std::map<int, gl::Program> mPrograms; ///< by sample count, auto exposure, encoding
+    gl::Program& program(int samples, bool automaticExposure, bool encodeSrgb, uint32_t tonemap);
+    std::map<int, gl::Program> mPrograms; ///< by operator, sample count, auto exposure, encoding
 };
 
 } // namespace specula::render
