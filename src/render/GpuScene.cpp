@@ -10,6 +10,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "core/Footprint.h"
 #include "core/Hash.h"
 #include "core/Log.h"
 #include "gl/State.h"
@@ -47,11 +48,9 @@ scene::Image downscaled(const scene::Image& source, int maxSize)
     out.height = std::clamp(int(source.height * scale), 1, maxSize);
     out.pixels.resize(size_t(out.width) * size_t(out.height) * 4);
     for (int y = 0; y < out.height; ++y) {
-        const int y0 = int(int64_t(y) * source.height / out.height);
-        const int y1 = std::max(y0 + 1, int(int64_t(y + 1) * source.height / out.height));
+        const auto [y0, y1] = footprint(y, out.height, source.height);
         for (int x = 0; x < out.width; ++x) {
-            const int x0 = int(int64_t(x) * source.width / out.width);
-            const int x1 = std::max(x0 + 1, int(int64_t(x + 1) * source.width / out.width));
+            const auto [x0, x1] = footprint(x, out.width, source.width);
             uint64_t sum[4] = {0, 0, 0, 0};
             for (int sy = y0; sy < y1; ++sy)
                 for (int sx = x0; sx < x1; ++sx)

@@ -9,6 +9,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "core/Error.h"
+#include "core/Footprint.h"
 #include "core/Hash.h"
 #include "core/ImageIO.h"
 
@@ -93,11 +94,9 @@ EnvironmentMap downscaledToFit(const EnvironmentMap& map, int maxSize)
     out.key = fmt::format("{}-fit{}x{}", map.key, out.width, out.height);
     out.texels.resize(size_t(out.width) * size_t(out.height));
     for (int y = 0; y < out.height; ++y) {
-        const int y0 = int(int64_t(y) * map.height / out.height);
-        const int y1 = std::max(y0 + 1, int(int64_t(y + 1) * map.height / out.height));
+        const auto [y0, y1] = footprint(y, out.height, map.height);
         for (int x = 0; x < out.width; ++x) {
-            const int x0 = int(int64_t(x) * map.width / out.width);
-            const int x1 = std::max(x0 + 1, int(int64_t(x + 1) * map.width / out.width));
+            const auto [x0, x1] = footprint(x, out.width, map.width);
             glm::dvec3 sum(0.0);
             for (int sy = y0; sy < y1; ++sy)
                 for (int sx = x0; sx < x1; ++sx) sum += glm::dvec3(map.at(sx, sy));

@@ -470,8 +470,8 @@ TEST_F(GlTest, EnvironmentBlockUploadsOnlyWhatChanged)
 // bright patch (11 × 11 texels, 7.7°) in its own direction, one after the other in the same
 // renderer: a Lambertian sphere (specularFactor 0) reflects albedo/π · E(n), E summed on the
 // CPU over the patch's texels (radiance × solid angle × n·d). Bound 3 % where n·d > 0.3 (no
-// patch texel below the horizon there), away from the rim; measured within 0.4 %. Stale constants light the
-// second sphere from the first patch's direction.
+// patch texel below the horizon there), away from the rim; measured within 0.4 %. Stale
+// constants light the second sphere from the first patch's direction.
 TEST_F(GlTest, DiffuseLightFollowsEachNewEnvironmentsBrightSources)
 {
     constexpr int W = 512, H = 256;

@@ -81,7 +81,7 @@ void updateEnvironment(const FrameContext& frame)
     const float blur = std::clamp(settings.environment.skyboxBlur, 0.0f, 1.0f);
     setEnvironmentField(environment, &EnvironmentData::params,
                         glm::vec4(settings.environment.intensity, float(ibl.prefiltered().levels()),
-                                  blur > 0.0f ? blur * float(ibl.prefiltered().levels() - 1) : -1.0f,
+                                  SkyboxPass::blurred(frame) ? blur * float(ibl.prefiltered().levels() - 1) : -1.0f,
                                   settings.environment.skybox ? 1.0f : 0.0f));
 }
 

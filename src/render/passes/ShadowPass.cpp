@@ -421,7 +421,6 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
     stats.views = views;
     stats.rendered = rendered;
     stats.cached = views - rendered;
-    stats.dropped = int(dropped.size());
     stats.atlasSize = q.atlas;
     if (r.planned.empty()) return {};
     // PCSS filters its penumbra with at least 16 taps (its blocker search has 16).

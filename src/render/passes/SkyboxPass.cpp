@@ -9,11 +9,15 @@
 
 namespace specula::render {
 
+bool SkyboxPass::blurred(const FrameContext& frame)
+{
+    return std::clamp(frame.settings.environment.skyboxBlur, 0.0f, 1.0f) > 0.0f;
+}
+
 gl::Program& SkyboxPass::program(const FrameContext& frame)
 {
-    // The same test as the environment block's params.z (ForwardPass: updateEnvironment). Two
-    // programs, not a branch on the uniform: gallivm (llvmpipe) would read both cubes.
-    const bool blurred = std::clamp(frame.settings.environment.skyboxBlur, 0.0f, 1.0f) > 0.0f;
+    // Two programs, not a branch on the uniform: gallivm (llvmpipe) would read both cubes.
+    const bool blurred = SkyboxPass::blurred(frame);
     gl::Program& program = mPrograms[blurred ? 1 : 0];
     if (!program)
         program = gl::Program({.vertex = "ibl/skybox.vert", .fragment = "ibl/skybox.frag",

@@ -9,6 +9,8 @@ struct FrameContext;
 
 class SkyboxPass {
 public:
+    /// The sky shows a prefiltered level (blurred) rather than the base cube.
+    static bool blurred(const FrameContext& frame);
     /// Compiles this frame's program now rather than on first use.
     void prepare(const FrameContext& frame);
     /// Draws the sky into the bound target when the frame has an environment and shows it.
