@@ -22,6 +22,7 @@
 #include "../lights/punctual.glsl"
 #if defined(IBL)
 #include "../ibl/ibl.glsl"
+#include "../ibl/bright_sources.glsl"
 #if defined(IBL_IMPORTANCE)
 #include "../ibl/importance.glsl"
 #endif
@@ -341,6 +342,17 @@ void main()
     // The lobe integrated per pixel with this material's BRDF (ibl/importance.glsl); the
     // diffuse lobe keeps the split sum's 1 - E, E the DFG table's.
     vec3 specularIbl = importanceSampledSpecular(surface, n, v, iblRoughness, iblFilm) * energyCompensation;
+#elif defined(IBL_SOURCE_SPECULAR) && IBL_SOURCE_COUNT > 0 && !defined(ANISOTROPY)
+    // The map less its bright sources, prefiltered, and the sources as lights (ibl/bright_sources.glsl).
+    float sourceWeight;
+    vec3 specularIbl = prefilteredRadianceLessSources(specularDominantDirection(lookupNormal, r, iblRoughness), iblRoughness, sourceWeight) *
+                       specularAlbedo;
+    if (sourceWeight > 0.0) {
+        SurfaceBrdf sourceSurface = surface;
+        sourceSurface.perceptualRoughness = iblRoughness;
+        sourceSurface.alpha = iblRoughness * iblRoughness;
+        specularIbl += sourceWeight * brightSourcesSpecular(sourceSurface, n, v, iblFilm) * albedoCompensation;
+    }
 #else
     vec3 specularIbl = prefilteredRadiance(specularDominantDirection(lookupNormal, r, iblRoughness), iblRoughness) * specularAlbedo;
 #endif

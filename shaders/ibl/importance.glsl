@@ -8,6 +8,7 @@
 // then integrates what the N samples leave between them and no sample pattern shows.
 #include "sampling.glsl"
 #include "../brdf/thin_film.glsl"
+#include "bright_sources.glsl"
 
 // Chosen by measurement against the Monte Carlo reference (docs/ibl.md, copper under
 // venice_1k, roughness 1): 32 samples 8.7 % mean error, 64 4.9 %, 128 3.1 %, 256 2.7 % (the
@@ -43,6 +44,9 @@ vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float percep
     float faceSize = float(textureSize(uEnvironmentCube, 0).x);
     float texelSolidAngle = 4.0 * PI / (6.0 * faceSize * faceSize);
     mat3 basis = basisAround(n);
+#if defined(IBL_SOURCE_SPECULAR) && IBL_SOURCE_COUNT > 0
+    float sourceWeight = brightSourceWeight(perceptualRoughness);
+#endif
     vec3 sum = vec3(0.0);
     for (uint i = 0u; i < uint(IBL_IMPORTANCE_SAMPLES); ++i) {
         vec2 xi = hammersley(i, uint(IBL_IMPORTANCE_SAMPLES));
@@ -55,7 +59,15 @@ vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float percep
         // pdf(l) = D_GGX(h) (n·h) / (4 v·h) (Walter et al. 2007, eq. 14 and 38).
         float pdf = D_GGX(NoH, alpha) * NoH / (4.0 * VoH);
         float lod = max(0.5 * log2(1.0 / (float(IBL_IMPORTANCE_SAMPLES) * pdf * texelSolidAngle)) + kIblLodBias, 0.0);
-        vec3 radiance = textureLod(uEnvironmentCube, toEnvironment(l), lod).rgb;
+        vec3 le = toEnvironment(l);
+#if defined(IBL_SOURCE_SPECULAR) && IBL_SOURCE_COUNT > 0
+        // The map less its bright sources, which are added below as lights (ibl/bright_sources.glsl).
+        vec3 radiance = vec3(0.0);
+        if (sourceWeight < 1.0) radiance += (1.0 - sourceWeight) * textureLod(uEnvironmentCube, le, lod).rgb;
+        if (sourceWeight > 0.0) radiance += sourceWeight * textureLod(uResidualCube, le, lod).rgb;
+#else
+        vec3 radiance = textureLod(uEnvironmentCube, le, lod).rgb;
+#endif
         // f_s (n·l) / pdf = F D V (n·l) 4 (v·h) / (D_GGX (n·h)); D / D_GGX = 1 unless another D.
 #if defined(BRDF_D_BECKMANN) || defined(BRDF_D_BLINN_PHONG)
         float dRatio = brdfD(NoH, alpha) / max(D_GGX(NoH, alpha), 1e-30);
@@ -69,7 +81,11 @@ vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float percep
 #endif
         sum += F * weight * radiance;
     }
-    return sum / float(IBL_IMPORTANCE_SAMPLES);
+    sum /= float(IBL_IMPORTANCE_SAMPLES);
+#if defined(IBL_SOURCE_SPECULAR) && IBL_SOURCE_COUNT > 0
+    if (sourceWeight > 0.0) sum += sourceWeight * brightSourcesSpecular(s, n, v, film);
+#endif
+    return sum;
 }
 
 #if defined(ANISOTROPY)

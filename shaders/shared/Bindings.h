@@ -45,6 +45,8 @@
 #define SPECULA_UNIT_SHEEN_COLOR 22         // KHR_materials_sheen's two textures (forward pass)
 #define SPECULA_UNIT_SHEEN_ROUGHNESS 23
 #define SPECULA_UNIT_SHEEN_ALBEDO 27        // the sheen lobe's directional albedo E(n.v, roughness) (ibl/sheen_albedo.comp)
+#define SPECULA_UNIT_RESIDUAL_CUBE 28       // the environment cube less its bright sources, box-filtered mips (ibl/bright_sources.glsl)
+#define SPECULA_UNIT_RESIDUAL_PREFILTERED 29 // its prefiltered levels from ImageBasedLighting::kResidualFirstLevel on
 #define SPECULA_UNIT_ANISOTROPY 24          // KHR_materials_anisotropy's texture (forward pass, ANISOTROPY variant)
 #define SPECULA_UNIT_IRIDESCENCE 25           // KHR_materials_iridescence's two textures (forward pass)
 #define SPECULA_UNIT_IRIDESCENCE_THICKNESS 26

@@ -32,11 +32,11 @@ std::string BakeSettings::key() const
     // The bake shaders, as compiled (includes resolved), are part of the key: editing one makes
     // a new cache entry rather than reading a stale one. v2: bump when the CPU side of the bake
     // (the spherical harmonics and irradiance sources of EnvironmentMap) or the file layout
-    // changes (v2: the irradiance cube).
+    // changes (v2: the irradiance cube; v3: the bright sources' residual cube and prefiltered levels).
     const uint64_t shaders = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/equirect_to_cube.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/irradiance.comp", {}).text);
-    return fmt::format("v2-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
+    return fmt::format("v3-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
                        kIrradianceSourceWidth, uint32_t(shaders ^ (shaders >> 32)));
 }
 
@@ -206,6 +206,10 @@ ResolvedShading dfgVariant(const ResolvedShading& shading)
 struct ImageBasedLighting::Impl {
     gl::Program toCube, prefilter, irradianceProgram;
     gl::Texture cube, prefiltered, irradiance;
+    // With brightSourcesSpecular: the cube less the bright sources, and the prefiltered chain's
+    // levels from kResidualFirstLevel on made from it.
+    gl::Texture residualCube, residualPrefiltered;
+    bool sourcesSpecular = false;
     /// DFG tables by dfgKey of their variant, made on first use; the compute program is
     /// compiled only to bake (a table read from the disk cache needs none) and not kept.
     std::map<int, gl::Texture> luts;
@@ -222,17 +226,9 @@ struct ImageBasedLighting::Impl {
         return p;
     }
 
-    void bake(gl::State& state, const EnvironmentMap& map, const BakeSettings& s)
+    /// `map` on a cube of `size`² faces (RGBA16F) with box-filtered mips.
+    gl::Texture cubeFrom(gl::State& state, const EnvironmentMap& map, int size, const char* label)
     {
-        gl::DebugGroup group("bake environment");
-        // Each stage's time (glFinish after it: a bake waits for its results anyway), logged.
-        Stopwatch stage;
-        std::string stages;
-        const auto lap = [&](const std::string& name) {
-            glFinish();
-            stages += fmt::format("{}{} {:.0f} ms", stages.empty() ? "" : ", ", name, stage.elapsedMs());
-            stage = Stopwatch();
-        };
         // Source: RGBA32F so values above the half-float range (a real sun) survive until the cube.
         gl::TextureDesc sourceDesc;
         sourceDesc.format = gl::Format::RGBA32F;
@@ -253,51 +249,102 @@ struct ImageBasedLighting::Impl {
         gl::TextureDesc cubeDesc;
         cubeDesc.type = gl::TextureType::Cube;
         cubeDesc.format = gl::Format::RGBA16F;
-        cubeDesc.width = cubeDesc.height = s.cubeSize;
+        cubeDesc.width = cubeDesc.height = size;
         cubeDesc.levels = 0;
-        cubeDesc.label = "environment cube";
-        cube = gl::Texture(cubeDesc);
+        cubeDesc.label = label;
+        gl::Texture out(cubeDesc);
         state.useProgram(program(toCube, "ibl/equirect_to_cube.comp"));
         state.bindTexture(0, source);
         state.bindSampler(0, nullptr); // the source's own repeat wrap (set above)
-        state.bindImage(0, cube, 0, gl::ImageAccess::WriteOnly, /*layered*/ true);
-        state.dispatchCompute(uint32_t(groups(s.cubeSize)), uint32_t(groups(s.cubeSize)), 6);
+        state.bindImage(0, out, 0, gl::ImageAccess::WriteOnly, /*layered*/ true);
+        state.dispatchCompute(uint32_t(groups(size)), uint32_t(groups(size)), 6);
         state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
-        cube.generateMipmaps();
-        lap("cube");
+        out.generateMipmaps();
+        return out;
+    }
 
-        gl::TextureDesc prefilteredDesc = cubeDesc;
-        prefilteredDesc.width = prefilteredDesc.height = s.prefilterSize;
-        prefilteredDesc.levels = s.prefilterLevels;
-        prefilteredDesc.label = "prefiltered environment";
-        prefiltered = gl::Texture(prefilteredDesc);
+    /// Levels firstLevel .. s.prefilterLevels - 1 of the prefiltered chain of `source` into
+    /// `target`'s levels 0, 1, ... (roughness = level / (levels - 1) of the whole chain).
+    void prefilterLevels(gl::State& state, const gl::Texture& source, gl::Texture& target, int firstLevel, const BakeSettings& s,
+                         const std::function<void(const std::string&)>& lap)
+    {
         gl::Program& p = program(prefilter, "ibl/prefilter.comp");
         state.useProgram(p);
-        state.bindTexture(0, cube);
+        state.bindTexture(0, source);
         state.bindSampler(0, nullptr);
         p.set(p.uniformLocation("uSamples"), uint32_t(s.prefilterSamples));
-        p.set(p.uniformLocation("uSourceSize"), float(s.cubeSize));
-        p.set(p.uniformLocation("uSourceLevels"), float(cube.levels()));
+        p.set(p.uniformLocation("uSourceSize"), float(source.width()));
+        p.set(p.uniformLocation("uSourceLevels"), float(source.levels()));
         const int roughness = p.uniformLocation("uPerceptualRoughness");
-        for (int level = 0; level < s.prefilterLevels; ++level) {
+        for (int level = firstLevel; level < s.prefilterLevels; ++level) {
             p.set(roughness, float(level) / float(std::max(s.prefilterLevels - 1, 1)));
-            state.bindImage(0, prefiltered, level, gl::ImageAccess::WriteOnly, /*layered*/ true);
-            const int size = prefiltered.width(level);
+            state.bindImage(0, target, level - firstLevel, gl::ImageAccess::WriteOnly, /*layered*/ true);
+            const int size = target.width(level - firstLevel);
             state.dispatchCompute(uint32_t(groups(size)), uint32_t(groups(size)), 6);
             lap(fmt::format("prefilter {}²", size));
         }
         state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
+    }
+
+    void bake(gl::State& state, const EnvironmentMap& map, const BakeSettings& s)
+    {
+        gl::DebugGroup group("bake environment");
+        // Each stage's time (glFinish after it: a bake waits for its results anyway), logged.
+        Stopwatch stage;
+        std::string stages;
+        const auto lap = [&](const std::string& name) {
+            glFinish();
+            stages += fmt::format("{}{} {:.0f} ms", stages.empty() ? "" : ", ", name, stage.elapsedMs());
+            stage = Stopwatch();
+        };
+        cube = cubeFrom(state, map, s.cubeSize, "environment cube");
+        lap("cube");
+
+        gl::TextureDesc prefilteredDesc = cube.desc();
+        prefilteredDesc.width = prefilteredDesc.height = s.prefilterSize;
+        prefilteredDesc.levels = s.prefilterLevels;
+        prefilteredDesc.label = "prefiltered environment";
+        prefiltered = gl::Texture(prefilteredDesc);
+        prefilterLevels(state, cube, prefiltered, 0, s, lap);
         sh = projectSh9(map);
-        bakeIrradiance(state, map);
+        const IrradianceSplit split = splitIrradiance(map);
+        bakeIrradiance(state, split);
         lap("irradiance");
+        // The specular lobe's bright sources (ibl/bright_sources.glsl): the map less them.
+        residualCube = gl::Texture();
+        residualPrefiltered = gl::Texture();
+        sourcesSpecular = !bright.empty() && brightFluxShare(map, bright) >= kSourcesSpecularShare;
+        if (sourcesSpecular && s.prefilterLevels > kResidualFirstLevel) {
+            residualCube = cubeFrom(state, withoutBrightSources(map, split), s.cubeSize, "environment cube less its bright sources");
+            gl::TextureDesc desc = prefilteredDesc;
+            desc.width = desc.height = std::max(s.prefilterSize >> kResidualFirstLevel, 1);
+            desc.levels = s.prefilterLevels - kResidualFirstLevel;
+            desc.label = "prefiltered environment less its bright sources";
+            residualPrefiltered = gl::Texture(desc);
+            prefilterLevels(state, residualCube, residualPrefiltered, kResidualFirstLevel, s, lap);
+        } else {
+            sourcesSpecular = false;
+        }
         log::info("bake stages: {}", stages);
     }
 
-    /// The irradiance cube: the map reduced on the CPU (32-bit float), convolved on the GPU.
-    void bakeIrradiance(gl::State& state, const EnvironmentMap& map)
+    /// The cache's residual textures (after the bright sources): a flag, then both or none.
+    bool readResidual(std::ifstream& in)
     {
-        IrradianceSplit split = splitIrradiance(map);
-        bright = std::move(split.bright);
+        int32_t flag = -1;
+        residualCube = gl::Texture();
+        residualPrefiltered = gl::Texture();
+        if (!in.read(reinterpret_cast<char*>(&flag), sizeof flag) || (flag != 0 && flag != 1)) return false;
+        sourcesSpecular = flag == 1;
+        return !sourcesSpecular || (readTexture(in, residualCube, "environment cube less its bright sources", gl::Format::RGBA16F, 4) &&
+                                    readTexture(in, residualPrefiltered, "prefiltered environment less its bright sources",
+                                                gl::Format::RGBA16F, 4));
+    }
+
+    /// The irradiance cube: the map reduced on the CPU (32-bit float), convolved on the GPU.
+    void bakeIrradiance(gl::State& state, const IrradianceSplit& split)
+    {
+        bright = split.bright;
         const std::vector<IrradianceSource>& sources = split.cube;
         std::vector<glm::vec4> packed;
         packed.reserve(sources.size() * 2);
@@ -352,6 +399,9 @@ const gl::Texture& ImageBasedLighting::cube() const { return mImpl->cube; }
 const gl::Texture& ImageBasedLighting::prefiltered() const { return mImpl->prefiltered; }
 const gl::Texture& ImageBasedLighting::irradiance() const { return mImpl->irradiance; }
 const std::vector<IrradianceSource>& ImageBasedLighting::brightSources() const { return mImpl->bright; }
+bool ImageBasedLighting::brightSourcesSpecular() const { return mImpl->sourcesSpecular; }
+const gl::Texture& ImageBasedLighting::residualCube() const { return mImpl->residualCube; }
+const gl::Texture& ImageBasedLighting::residualPrefiltered() const { return mImpl->residualPrefiltered; }
 void ImageBasedLighting::setLutCacheDirectory(const fs::path& directory) { mImpl->lutCacheDirectory = directory; }
 
 BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const EnvironmentMap& original, const BakeSettings& requested,
@@ -381,7 +431,7 @@ BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const Environmen
         if (in && checkMagic(in) && readTexture(in, r.cube, "environment cube", gl::Format::RGBA16F, 4) &&
             readTexture(in, r.prefiltered, "prefiltered environment", gl::Format::RGBA16F, 4) &&
             readTexture(in, r.irradiance, "irradiance", gl::Format::RGBA16F, 4) &&
-            in.read(reinterpret_cast<char*>(r.sh.data()), sizeof(Sh9)) && readBright(in, r.bright)) {
+            in.read(reinterpret_cast<char*>(r.sh.data()), sizeof(Sh9)) && readBright(in, r.bright) && r.readResidual(in)) {
             r.has = true;
             report.fromCache = true;
             report.milliseconds = watch.elapsedMs();
@@ -400,6 +450,12 @@ BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const Environmen
             writeTextures(out, r.irradiance);
             out.write(reinterpret_cast<const char*>(r.sh.data()), sizeof(Sh9));
             writeBright(out, r.bright);
+            const int32_t residual = r.sourcesSpecular ? 1 : 0;
+            out.write(reinterpret_cast<const char*>(&residual), sizeof residual);
+            if (residual) {
+                writeTextures(out, r.residualCube);
+                writeTextures(out, r.residualPrefiltered);
+            }
         });
     }
     glFinish();

@@ -47,6 +47,18 @@ public:
     /// The environment's brightest parts, taken out of the irradiance cube and summed per pixel
     /// (EnvironmentData::bright*), at most kIrradianceBrightSources.
     const std::vector<IrradianceSource>& brightSources() const;
+    /// Whether the specular lobe takes the bright sources as lights too (ibl/importance.glsl):
+    /// when they hold at least kSourcesSpecularShare of the map's flux (a studio's softboxes, a
+    /// sun), where the cube's box mips would spread them across a rough lobe's horizon.
+    bool brightSourcesSpecular() const;
+    static constexpr float kSourcesSpecularShare = 0.2f;
+    /// The environment cube less what the bright sources stand for (their texels black), with
+    /// box-filtered mips, and the prefiltered chain's levels kResidualFirstLevel.. made from it
+    /// (its level 0 is the chain's kResidualFirstLevel): baked and cached when
+    /// brightSourcesSpecular(). Below that level the split sum reads the whole map's chain.
+    const gl::Texture& residualCube() const;
+    const gl::Texture& residualPrefiltered() const;
+    static constexpr int kResidualFirstLevel = 2;
     /// The split-sum DFG table of dfgVariant(shading): baked on first use by
     /// shaders/ibl/dfg.comp compiled with the variant's defines (the forward pass's), and
     /// cached on disk (setLutCacheDirectory) under a name that holds the variant, the table

@@ -191,16 +191,16 @@ struct Renderer::Impl {
 
 Renderer::Renderer() : mImpl(std::make_unique<Impl>())
 {
-    // The forward pass binds units up to SPECULA_UNIT_SHEEN_ALBEDO (shaders/shared/Bindings.h).
-    static_assert(SPECULA_UNIT_SHEEN_ALBEDO > SPECULA_UNIT_IRIDESCENCE_THICKNESS &&
+    // The forward pass binds units up to SPECULA_UNIT_RESIDUAL_PREFILTERED (shaders/shared/Bindings.h).
+    static_assert(SPECULA_UNIT_RESIDUAL_PREFILTERED > SPECULA_UNIT_RESIDUAL_CUBE && SPECULA_UNIT_RESIDUAL_CUBE > SPECULA_UNIT_SHEEN_ALBEDO && SPECULA_UNIT_SHEEN_ALBEDO > SPECULA_UNIT_IRIDESCENCE_THICKNESS &&
                   SPECULA_UNIT_IRIDESCENCE_THICKNESS > SPECULA_UNIT_IRIDESCENCE && SPECULA_UNIT_IRIDESCENCE > SPECULA_UNIT_ANISOTROPY &&
                   SPECULA_UNIT_ANISOTROPY > SPECULA_UNIT_SHEEN_ROUGHNESS &&
                   SPECULA_UNIT_SHEEN_ROUGHNESS > SPECULA_UNIT_CLEARCOAT_NORMAL &&
                   SPECULA_UNIT_CLEARCOAT_NORMAL > SPECULA_UNIT_ENVIRONMENT_CUBE && SPECULA_UNIT_ENVIRONMENT_CUBE > SPECULA_UNIT_TRANSMISSION &&
                   SPECULA_UNIT_TRANSMISSION > SPECULA_UNIT_IRRADIANCE);
-    if (gl::maxTextureUnits() <= SPECULA_UNIT_SHEEN_ALBEDO)
+    if (gl::maxTextureUnits() <= SPECULA_UNIT_RESIDUAL_PREFILTERED)
         throw Error("this OpenGL implementation has {} texture units; Specula needs {}", gl::maxTextureUnits(),
-                    SPECULA_UNIT_SHEEN_ALBEDO + 1);
+                    SPECULA_UNIT_RESIDUAL_PREFILTERED + 1);
 }
 Renderer::~Renderer() = default;
 

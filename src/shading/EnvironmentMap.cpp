@@ -246,8 +246,10 @@ IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount, int 
                       [&](size_t a, size_t b) { return luminance(a) > luminance(b) || (luminance(a) == luminance(b) && a < b); });
     IrradianceSplit split;
     std::vector<bool> taken(fine.size(), false);
+    split.blockSize = step;
     for (size_t k = 0; k < n; ++k) {
         split.bright.push_back(fine[order[k]]);
+        split.brightBlocks.emplace_back(int(order[k] % size_t(width)) * step, int(order[k] / size_t(width)) * step);
         taken[order[k]] = true;
     }
     // The rest merged into coarser blocks: flux summed, directions by flux-weighted centroid.
@@ -268,6 +270,33 @@ IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount, int 
             split.cube.push_back({glm::vec3(glm::normalize(c)), glm::vec3(flux)});
         }
     return split;
+}
+
+EnvironmentMap withoutBrightSources(const EnvironmentMap& map, const IrradianceSplit& split)
+{
+    EnvironmentMap rest = map;
+    for (const glm::ivec2& block : split.brightBlocks)
+        for (int y = block.y; y < std::min(block.y + split.blockSize, map.height); ++y)
+            for (int x = block.x; x < std::min(block.x + split.blockSize, map.width); ++x)
+                rest.texels[size_t(y) * size_t(map.width) + size_t(x)] = glm::vec3(0.0f);
+    rest.key = map.key + "-without-bright";
+    return rest;
+}
+
+float brightFluxShare(const EnvironmentMap& map, const std::vector<IrradianceSource>& bright)
+{
+    const glm::dvec3 weights(0.2126, 0.7152, 0.0722);
+    double total = 0.0;
+    for (int y = 0; y < map.height; ++y) {
+        const double solidAngle = 2.0 * kPi / double(map.width) *
+                                  (std::cos(kPi * double(y) / double(map.height)) - std::cos(kPi * double(y + 1) / double(map.height)));
+        double row = 0.0;
+        for (int x = 0; x < map.width; ++x) row += glm::dot(glm::dvec3(map.at(x, y)), weights);
+        total += row * solidAngle;
+    }
+    double part = 0.0;
+    for (const IrradianceSource& s : bright) part += glm::dot(glm::dvec3(s.flux), weights);
+    return total > 0.0 ? float(part / total) : 0.0f;
 }
 
 std::vector<glm::vec3> irradianceCube(const std::vector<IrradianceSource>& sources, int size)

@@ -87,9 +87,21 @@ glm::vec3 irradianceAt(const std::vector<IrradianceSource>& sources, const glm::
 struct IrradianceSplit {
     std::vector<IrradianceSource> bright;
     std::vector<IrradianceSource> cube;
+    /// The map's texels that the bright sources stand for: block k of `bright` covers texels
+    /// [brightBlocks[k].x, + blockSize) × [brightBlocks[k].y, + blockSize) (clipped to the map).
+    std::vector<glm::ivec2> brightBlocks;
+    int blockSize = 1;
 };
 IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount = kIrradianceBrightSources,
                                 int brightWidth = kIrradianceSourceWidth, int cubeWidth = kIrradianceCubeSourceWidth);
+
+/// `map` less what `split`'s bright sources stand for (their texels black): the environment the
+/// specular lobe reads from the cube where shading adds the bright sources as lights
+/// (ibl/ibl.glsl: brightSourcesSpecular), so that no energy is lost or counted twice.
+EnvironmentMap withoutBrightSources(const EnvironmentMap& map, const IrradianceSplit& split);
+
+/// The share of the map's flux (luminance × solid angle over the sphere) in `bright`.
+float brightFluxShare(const EnvironmentMap& map, const std::vector<IrradianceSource>& bright);
 
 /// The irradiance cube (shaders/ibl/irradiance.comp bakes it on the GPU; this is its CPU
 /// twin): irradianceAt the centre of each texel of six `size`² faces. Face after face, rows

@@ -32,6 +32,17 @@ struct Frame {
     dvec3 toWorld(const dvec3& d) const { return t * d.x + b * d.y + n * d.z; }
 };
 
+// The mirror's delta lobe, exactly: F at v·h = n·v times the map in the mirror direction.
+dvec3 mirrorRadiance(const render::brdf::Surface& surface, const dvec3& n, const dvec3& v, const render::EnvironmentMap& map)
+{
+    const double NoV = glm::dot(n, v);
+    const dvec3 reflected = 2.0 * NoV * n - v;
+    const dvec3 f0 = glm::mix(glm::min(surface.f0Dielectric * surface.specularColor, dvec3(1.0)) * surface.specularFactor,
+                              surface.baseColor, surface.metallic);
+    const double f90 = surface.specularFactor + (1.0 - surface.specularFactor) * surface.metallic;
+    return render::brdf::fresnel(surface.fresnel, f0, f90, std::clamp(NoV, 0.0, 1.0)) * dvec3(map.sample(glm::vec3(reflected)));
+}
+
 } // namespace
 
 EnvironmentSampler::EnvironmentSampler(const render::EnvironmentMap& map) : mWidth(map.width), mHeight(map.height)
@@ -113,7 +124,6 @@ ReferenceSample referenceRadiance(const render::brdf::Surface& surface, const gl
     // Probability of sampling the specular lobe among the BRDF's two strategies.
     const double specularProbability = mirror ? 0.0 : hasDiffuse ? 0.5 : 1.0;
     const Frame frame(n);
-    const double NoV = glm::dot(n, v);
     // KHR_materials_anisotropy: sample the anisotropic lobe itself (brdf::Surface::anisotropy).
     const bool anisotropic = !mirror && surface.anisotropy > 0.0 && surface.distribution == brdf::Distribution::GGX;
     const dvec3 lobeT = glm::normalize(surface.anisotropyDirection - n * glm::dot(n, surface.anisotropyDirection));
@@ -191,17 +201,83 @@ ReferenceSample referenceRadiance(const render::brdf::Surface& surface, const gl
 
     ReferenceSample out;
     out.radiance = mean;
-    if (mirror) {
-        // The delta lobe: F at v·h = n·v, the map in the mirror direction, exactly.
-        const dvec3 reflected = 2.0 * NoV * n - v;
-        const dvec3 f0 = glm::mix(glm::min(surface.f0Dielectric * surface.specularColor, dvec3(1.0)) * surface.specularFactor,
-                                  surface.baseColor, surface.metallic);
-        const double f90 = surface.specularFactor + (1.0 - surface.specularFactor) * surface.metallic;
-        out.radiance += brdf::fresnel(surface.fresnel, f0, f90, std::clamp(NoV, 0.0, 1.0)) * dvec3(map.sample(glm::vec3(reflected)));
-    }
+    if (mirror) out.radiance += mirrorRadiance(surface, n, v, map);
     const double l = luminance(out.radiance);
     out.relativeError = l > 0.0 ? std::sqrt(variance) / l : 0.0;
     return out;
+}
+
+EnvironmentQuadrature::EnvironmentQuadrature(const render::EnvironmentMap& map, int block) : mMap(&map), mBlock(block)
+{
+    const int w = map.width, h = map.height;
+    mTexels.resize(size_t(w) * size_t(h));
+    for (int y = 0; y < h; ++y) {
+        const double solidAngle = 2.0 * kPi / double(w) * (std::cos(kPi * double(y) / double(h)) - std::cos(kPi * double(y + 1) / double(h)));
+        for (int x = 0; x < w; ++x) {
+            const glm::vec3 d = render::equirectToDirection({(float(x) + 0.5f) / float(w), (float(y) + 0.5f) / float(h)});
+            mTexels[size_t(y) * size_t(w) + size_t(x)] = {glm::normalize(d), map.at(x, y) * float(solidAngle)};
+        }
+    }
+    for (int by = 0; by < h; by += block)
+        for (int bx = 0; bx < w; bx += block) {
+            Block b;
+            b.x0 = bx, b.y0 = by;
+            dvec3 centroid(0.0), plain(0.0);
+            for (int y = by; y < std::min(by + block, h); ++y)
+                for (int x = bx; x < std::min(bx + block, w); ++x) {
+                    const Texel& t = mTexels[size_t(y) * size_t(w) + size_t(x)];
+                    b.flux += dvec3(t.flux);
+                    centroid += dvec3(t.direction) * luminance(dvec3(t.flux));
+                    plain += dvec3(t.direction);
+                }
+            b.centre = glm::normalize(plain);
+            b.direction = glm::length(centroid) > 0.0 ? glm::normalize(centroid) : b.centre;
+            for (int y = by; y < std::min(by + block, h); ++y)
+                for (int x = bx; x < std::min(bx + block, w); ++x) {
+                    const dvec3 d(mTexels[size_t(y) * size_t(w) + size_t(x)].direction);
+                    b.radius = std::max(b.radius, std::acos(std::clamp(glm::dot(d, b.centre), -1.0, 1.0)));
+                }
+            mBlocks.push_back(b);
+        }
+}
+
+glm::dvec3 EnvironmentQuadrature::radiance(const render::brdf::Surface& surface, const glm::dvec3& n, const glm::dvec3& v,
+                                           const glm::dvec3& specularCompensation, bool everyTexel) const
+{
+    namespace brdf = render::brdf;
+    const bool mirror = surface.perceptualRoughness < 1e-3;
+    const double r = std::clamp(surface.perceptualRoughness, brdf::kMinPerceptualRoughness, 1.0);
+    const double alpha = r * r;
+    auto integrand = [&](const dvec3& l) -> dvec3 {
+        if (glm::dot(n, l) <= 0.0) return dvec3(0.0);
+        dvec3 diffuse, specular;
+        brdf::evaluateLobes(surface, n, v, l, diffuse, specular);
+        return (diffuse + (mirror ? dvec3(0.0) : specular * specularCompensation)) * glm::dot(n, l);
+    };
+    // Where D is above 1 % of its peak: θ_h < atan(3α), θ_l < 2 θ_h about the mirror direction
+    // for n = v, doubled for the lobe's stretch away from it, plus a block's size.
+    const bool sharp = !mirror && alpha < 0.1;
+    const double refine = everyTexel ? 4.0 : sharp ? 4.0 * std::atan(3.0 * alpha) + glm::radians(3.0) : -1.0;
+    const dvec3 reflected = 2.0 * glm::dot(n, v) * n - v;
+    const int w = mMap->width, h = mMap->height;
+    dvec3 sum(0.0);
+    for (const Block& b : mBlocks) {
+        // A block wholly below the horizon adds nothing (n·l < 0 at every texel).
+        if (glm::dot(n, b.centre) < -std::sin(b.radius)) continue;
+        const double angle = std::acos(std::clamp(glm::dot(b.centre, reflected), -1.0, 1.0)) - b.radius;
+        // Blocks across the horizon are summed texel by texel too: max(0, n·l) kinks there.
+        if (angle < refine || std::abs(glm::dot(n, b.centre)) < std::sin(b.radius)) {
+            for (int y = b.y0; y < std::min(b.y0 + mBlock, h); ++y)
+                for (int x = b.x0; x < std::min(b.x0 + mBlock, w); ++x) {
+                    const Texel& t = mTexels[size_t(y) * size_t(w) + size_t(x)];
+                    sum += integrand(dvec3(t.direction)) * dvec3(t.flux);
+                }
+        } else {
+            sum += integrand(b.direction) * b.flux;
+        }
+    }
+    if (mirror) sum += mirrorRadiance(surface, n, v, *mMap);
+    return sum;
 }
 
 void parallelFor(size_t count, const std::function<void(size_t)>& f)

@@ -7,10 +7,12 @@
 // Metric: the mean absolute error relative to the reference over each sphere,
 // Σ_pixels Σ_rgb |GPU − reference| / Σ_pixels Σ_rgb reference.
 // Bounds: the mirror (roughness 0 metal) ≤ 2 % in both modes; the others as measured (see
-// the bounds below and docs/ibl.md: issue 14's 3 % and 6 % are not met yet).
+// the bounds below and docs/ibl.md: issue 14's 3 % and 6 % are not met everywhere yet).
 //
-// In the suite: every third pixel in x and y, 2 × 1024 samples per pixel. The table in
-// docs/ibl.md is this test with SPECULA_IBL_REFERENCE=full: every pixel, 2 × 8192 samples.
+// The reference is EnvironmentQuadrature (IblReference.h): the integral summed over the map's
+// texels, no noise; IblReference.Quadrature* check it against every texel summed one by one
+// and against the Monte Carlo estimate. In the suite: every third pixel in x and y. The table
+// in docs/ibl.md is this test with SPECULA_IBL_REFERENCE=full: every pixel.
 #include "GlTestContext.h"
 #include "IblReference.h"
 #include "SphereTiles.h"
@@ -92,7 +94,7 @@ struct Pixel {
 };
 
 struct SphereError {
-    double sumAbs = 0.0, sumReference = 0.0, noise = 0.0;
+    double sumAbs = 0.0, sumReference = 0.0;
     int pixels = 0;
     double relative() const { return sumAbs / sumReference; }
 };
@@ -103,7 +105,6 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
 {
     const bool full = std::getenv("SPECULA_IBL_REFERENCE") && std::string(std::getenv("SPECULA_IBL_REFERENCE")) == "full";
     const int stride = full ? 1 : 3;
-    const int samples = full ? 8192 : 1024;
     std::vector<Pixel> pixels;
     for (int y = 0; y < kSize; y += stride)
         for (int x = 0; x < kSize; x += stride) {
@@ -115,7 +116,7 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
 
     struct Result {
         std::string what;
-        double error, bound, noise;
+        double error, bound;
     };
     std::vector<Result> results;
     std::string table = "| map | material | mode | r 0 | r 0.25 | r 0.5 | r 0.75 | r 1 |\n|---|---|---|---|---|---|---|---|\n";
@@ -124,7 +125,7 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
         const std::string file = std::string(SPECULA_ASSETS_DIR) + "/env/" + mapName;
         ASSERT_TRUE(std::filesystem::exists(file)) << "shared assets missing";
         const render::EnvironmentMap map = render::loadEnvironmentMap(file);
-        const EnvironmentSampler sampler(map);
+        const EnvironmentQuadrature quadrature(map);
         render::Renderer renderer;
         renderer.setEnvironment(map);
         for (bool metal : {true, false}) {
@@ -137,7 +138,7 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
                 materials.push_back(m);
             }
             // The reference, once per sphere and pixel, on every core.
-            std::vector<ReferenceSample> reference(size_t(kSpheres) * pixels.size());
+            std::vector<glm::dvec3> reference(size_t(kSpheres) * pixels.size());
             test::parallelFor(reference.size(), [&](size_t k) {
                 const int s = int(k / pixels.size());
                 const Pixel& p = pixels[k % pixels.size()];
@@ -146,7 +147,7 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
                 const double e = kRoughnesses[s] == 0.0f ? 1.0 : albedo[size_t(s)].at(glm::dot(p.n, v));
                 const glm::dvec3 f0 = glm::mix(glm::dvec3(0.04), surface.baseColor, surface.metallic);
                 const glm::dvec3 compensation = glm::dvec3(1.0) + f0 * (1.0 / e - 1.0);
-                reference[k] = referenceRadiance(surface, p.n, v, map, sampler, compensation, samples, k);
+                reference[k] = quadrature.radiance(surface, p.n, v, compensation);
             });
 
             for (render::IblSpecular mode : {render::IblSpecular::SplitSum, render::IblSpecular::Importance}) {
@@ -158,30 +159,27 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
                 for (int s = 0; s < kSpheres; ++s) {
                     SphereError error;
                     for (size_t i = 0; i < pixels.size(); ++i) {
-                        const ReferenceSample& ref = reference[size_t(s) * pixels.size() + i];
+                        const glm::dvec3& ref = reference[size_t(s) * pixels.size() + i];
                         const glm::dvec3 got(pixel(r.image, s * kSize + pixels[i].x, pixels[i].y));
-                        const glm::dvec3 d = glm::abs(got - ref.radiance);
+                        const glm::dvec3 d = glm::abs(got - ref);
                         error.sumAbs += d.x + d.y + d.z;
-                        error.sumReference += ref.radiance.x + ref.radiance.y + ref.radiance.z;
-                        error.noise += ref.relativeError;
+                        error.sumReference += ref.x + ref.y + ref.z;
                         ++error.pixels;
                     }
                     const float roughness = kRoughnesses[s];
-                    // Bounds, from the measurements in docs/ibl.md with room for the suite's
-                    // noisier reference. The issue's targets (importance 3 %, split sum 6 %) are
-                    // met by the mirror only: under studio_1k the small bright softboxes leak
-                    // across each lobe's horizon through the box mips (importance) or the
-                    // n = v = r prefilter (split sum), 20–50 % at roughness ≥ 0.5.
+                    // Bounds, from the measurements in docs/ibl.md (a noise-free reference: the
+                    // measured errors plus a margin for other drivers' rounding). The issue's
+                    // targets (importance 3 %, split sum 6 %, mirror 2 %) are met by the mirror
+                    // and, in importance, up to roughness 0.5 on the sky-lit maps; see docs/ibl.md
+                    // for what is left. Without the bright sources as the specular lobe's lights
+                    // the studio's copper is 12-48 % off in importance and 18-27 % in the split
+                    // sum, and fails these.
                     const bool importance = mode == render::IblSpecular::Importance;
-                    const bool studio = std::string(mapName) == "studio_1k.hdr";
-                    const double bound = metal && roughness == 0.0f ? 0.02
-                                         : studio                  ? (importance ? 0.55 : 0.32)
-                                                                   : (importance ? 0.07 : 0.16);
-                    const double noise = error.noise / error.pixels;
-                    row += fmt::format(" {:.2f} % ({:.2f}) |", 100.0 * error.relative(), 100.0 * noise);
+                    const double bound = metal && roughness == 0.0f ? 0.02 : importance ? 0.07 : 0.16;
+                    row += fmt::format(" {:.2f} % |", 100.0 * error.relative());
                     results.push_back({std::string(mapName) + (metal ? " copper" : " dielectric") + " roughness " +
                                            fmt::format("{}", roughness) + " " + render::iblSpecularName(mode),
-                                       error.relative(), bound, noise});
+                                       error.relative(), bound});
                 }
                 table += row + "\n";
                 if (const char* dump = std::getenv("SPECULA_IBL_REFERENCE_DUMP")) {
@@ -191,7 +189,7 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
                     both.pixels.resize(both.pixels.size() * 2, 0.0f);
                     for (int s = 0; s < kSpheres; ++s)
                         for (size_t i = 0; i < pixels.size(); ++i) {
-                            const glm::dvec3 c = reference[size_t(s) * pixels.size() + i].radiance;
+                            const glm::dvec3 c = reference[size_t(s) * pixels.size() + i];
                             const size_t at = (size_t(kSize + pixels[i].y) * size_t(both.width) + size_t(s * kSize + pixels[i].x)) * 4;
                             both.pixels[at] = float(c.x), both.pixels[at + 1] = float(c.y), both.pixels[at + 2] = float(c.z);
                             both.pixels[at + 3] = 1.0f;
@@ -207,15 +205,8 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
             }
         }
     }
-    std::printf("mean relative absolute error against the Monte Carlo reference (its own mean per-pixel noise):\n%s", table.c_str());
-    // The reference's own noise (mean per-pixel standard error of its luminance): measured
-    // 1.3–3.6 % per pixel with the suite's 2 × 1,024 samples, a third of that in the full run
-    // (the issue's 0.3 % per pixel would take ~2 × 10⁵ samples a pixel). Averaged over a
-    // sphere's pixels it inflates the mean error by well under its own size.
-    for (const Result& r : results) {
-        EXPECT_LT(r.error, r.bound) << r.what;
-        EXPECT_LT(r.noise, full ? 0.015 : 0.05) << r.what << ": reference not converged";
-    }
+    std::printf("mean relative absolute error against the reference:\n%s", table.c_str());
+    for (const Result& r : results) EXPECT_LT(r.error, r.bound) << r.what;
 }
 
 TEST(IblReference, IntegratesALambertianSurfaceToTheBruteForceIrradiance)
@@ -239,3 +230,73 @@ TEST(IblReference, IntegratesALambertianSurfaceToTheBruteForceIrradiance)
         EXPECT_NEAR(got.radiance.y, expected.y, 0.01 * expected.y);
     }
 }
+
+namespace {
+
+// Views and normals of a sphere seen from +Z, as the GPU test's pixels: the centre, halfway
+// out and near the rim, in two directions.
+std::vector<glm::dvec3> quadratureNormals()
+{
+    std::vector<glm::dvec3> normals;
+    for (const glm::dvec2 p : {glm::dvec2(0.0, 0.0), glm::dvec2(0.5, 0.2), glm::dvec2(-0.3, 0.7), glm::dvec2(0.85, -0.4)})
+        normals.push_back(glm::dvec3(p, std::sqrt(1.0 - glm::dot(p, p))));
+    return normals;
+}
+
+} // namespace
+
+TEST(IblReference, QuadratureAgreesWithEveryTexelSummed)
+{
+    // The blocks stand for their texels only where that is exact to well under the 0.3 % the
+    // reference may be off by: against the sum over every texel one by one, within 0.1 %
+    // (luminance) for both materials at every roughness under the studio's small bright boxes.
+    const render::EnvironmentMap map = render::loadEnvironmentMap(std::string(SPECULA_ASSETS_DIR) + "/env/studio_1k.hdr");
+    const EnvironmentQuadrature quadrature(map);
+    const auto luminance = [](const glm::dvec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; };
+    double worst = 0.0;
+    for (bool metal : {true, false})
+        for (float roughness : kRoughnesses)
+            for (const glm::dvec3& n : quadratureNormals()) {
+                const render::brdf::Surface surface = cpuSurface(metal, roughness);
+                const glm::dvec3 v(0, 0, 1);
+                const double fast = luminance(quadrature.radiance(surface, n, v, glm::dvec3(1.0)));
+                const double exact = luminance(quadrature.radiance(surface, n, v, glm::dvec3(1.0), true));
+                worst = std::max(worst, std::abs(fast - exact) / exact);
+                EXPECT_NEAR(fast, exact, 0.001 * exact) << (metal ? "metal" : "dielectric") << " roughness " << roughness << " n "
+                                                        << n.x << " " << n.y << " " << n.z;
+            }
+    std::printf("blocks against every texel: worst %.4f %%\n", 100.0 * worst);
+}
+
+TEST(IblReference, QuadratureAgreesWithMonteCarlo)
+{
+    // Two independent estimates of one integral: the quadrature (noise-free) and the Monte
+    // Carlo reference (2 × 65,536 samples, MIS of the BRDF and the map, the map read
+    // bilinearly). They must agree within 4 standard errors of the Monte Carlo plus 0.3 %.
+    const render::EnvironmentMap map = render::loadEnvironmentMap(std::string(SPECULA_ASSETS_DIR) + "/env/studio_1k.hdr");
+    const EnvironmentQuadrature quadrature(map);
+    const EnvironmentSampler sampler(map);
+    const auto luminance = [](const glm::dvec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; };
+    struct Case {
+        bool metal;
+        float roughness;
+    };
+    const std::vector<Case> cases{{true, 0.25f}, {true, 0.5f}, {true, 1.0f}, {false, 0.0f}, {false, 0.5f}};
+    const std::vector<glm::dvec3> normals = quadratureNormals();
+    std::vector<ReferenceSample> mc(cases.size() * normals.size());
+    test::parallelFor(mc.size(), [&](size_t k) {
+        const Case& c = cases[k / normals.size()];
+        mc[k] = referenceRadiance(cpuSurface(c.metal, c.roughness), normals[k % normals.size()], glm::dvec3(0, 0, 1), map, sampler,
+                                  glm::dvec3(1.0), 65536, 7000 + k);
+    });
+    for (size_t k = 0; k < mc.size(); ++k) {
+        const Case& c = cases[k / normals.size()];
+        const glm::dvec3& n = normals[k % normals.size()];
+        const double q = luminance(quadrature.radiance(cpuSurface(c.metal, c.roughness), n, glm::dvec3(0, 0, 1), glm::dvec3(1.0)));
+        const double m = luminance(mc[k].radiance);
+        std::printf("%s r %.2f n (%.2f %.2f %.2f): quadrature %.5f Monte Carlo %.5f (standard error %.2f %%)\n",
+                    c.metal ? "metal" : "dielectric", c.roughness, n.x, n.y, n.z, q, m, 100.0 * mc[k].relativeError);
+        EXPECT_NEAR(q, m, (4.0 * mc[k].relativeError + 0.003) * m);
+    }
+}
+

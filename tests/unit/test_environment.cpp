@@ -205,3 +205,27 @@ TEST(Environment, DownscaledToFitAveragesFootprints)
         EXPECT_FLOAT_EQ(fitted.at(x, 0).z, 4.5f); // the mean of rows 0..9
     }
 }
+
+// The specular lobe's residual map (withoutBrightSources): the map less exactly what the bright
+// sources stand for, so that the residual's irradiance plus the sources' is the map's (no
+// energy lost or counted twice), and the sources' share of the flux as brightFluxShare says.
+// studio_1k: its 32 brightest 1.4° blocks hold 65 % of the flux (the softboxes); venice_1k's 1 %.
+TEST(Environment, ResidualMapPlusBrightSourcesIsTheMap)
+{
+    for (const char* name : {"studio_1k.hdr", "venice_1k.hdr"}) {
+        const EnvironmentMap map = loadEnvironmentMap(std::string(kEnv) + "/" + name);
+        const IrradianceSplit split = splitIrradiance(map);
+        ASSERT_EQ(split.brightBlocks.size(), split.bright.size());
+        const EnvironmentMap rest = withoutBrightSources(map, split);
+        EXPECT_NE(rest.key, map.key);
+        for (const glm::vec3 n : {glm::vec3(0, 1, 0), glm::vec3(0, -1, 0), glm::vec3(1, 0, 0), glm::normalize(glm::vec3(-0.3f, 0.5f, 0.8f))}) {
+            const glm::vec3 whole = bruteForceIrradiance(map, n);
+            const glm::vec3 parts = bruteForceIrradiance(rest, n) + irradianceAt(split.bright, n);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(parts[c], whole[c], 2e-3 * whole[c] + 1e-6) << name;
+        }
+        const float share = brightFluxShare(map, split.bright);
+        std::printf("%s: bright sources' share of the flux %.1f %%\n", name, 100.0 * share);
+        if (std::string(name) == "studio_1k.hdr") EXPECT_GT(share, ImageBasedLighting::kSourcesSpecularShare);
+        else EXPECT_LT(share, ImageBasedLighting::kSourcesSpecularShare);
+    }
+}

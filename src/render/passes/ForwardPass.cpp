@@ -96,6 +96,7 @@ struct ForwardPass::Impl {
     // The environment's bright sources, written into every forward program as constants
     // (ibl/ibl.glsl's IBL_SOURCE_*): the programs are made again when they change.
     std::vector<IrradianceSource> sources;
+    bool sourcesSpecular = false; // IBL_SOURCE_SPECULAR: the specular lobe takes them as lights too
     std::vector<std::string> sourceDefines{"IBL_SOURCE_COUNT 0"};
 
     void updateSources(const FrameContext& frame)
@@ -106,9 +107,15 @@ struct ForwardPass::Impl {
         const bool same = count == sources.size() && std::equal(sources.begin(), sources.end(), all.begin(), [](const auto& a, const auto& b) {
             return a.direction == b.direction && a.flux == b.flux;
         });
-        if (same) return;
+        const bool specular = frame.stores.ibl.hasEnvironment() && frame.stores.ibl.brightSourcesSpecular() && count > 0;
+        if (same && specular == sourcesSpecular) return;
         sources.assign(all.begin(), all.begin() + std::ptrdiff_t(count));
+        sourcesSpecular = specular;
         sourceDefines = irradianceSourceDefines(sources);
+        if (sourcesSpecular) {
+            sourceDefines.push_back("IBL_SOURCE_SPECULAR");
+            sourceDefines.push_back(fmt::format("IBL_RESIDUAL_FIRST_LEVEL {}", ImageBasedLighting::kResidualFirstLevel));
+        }
         programs.clear(); // made with the old constants; this frame's materials take new ones
     }
 
@@ -265,6 +272,12 @@ void ForwardPass::addTo(FrameGraph& graph, const FrameContext& frame, const Fram
             // The importance-sampled specular reads the unfiltered cube's box mips (ibl/importance.glsl).
             state.bindTexture(SPECULA_UNIT_ENVIRONMENT_CUBE, stores.ibl.cube());
             state.bindSampler(SPECULA_UNIT_ENVIRONMENT_CUBE, nullptr);
+            if (stores.ibl.brightSourcesSpecular()) {
+                state.bindTexture(SPECULA_UNIT_RESIDUAL_CUBE, stores.ibl.residualCube());
+                state.bindSampler(SPECULA_UNIT_RESIDUAL_CUBE, nullptr);
+                state.bindTexture(SPECULA_UNIT_RESIDUAL_PREFILTERED, stores.ibl.residualPrefiltered());
+                state.bindSampler(SPECULA_UNIT_RESIDUAL_PREFILTERED, nullptr);
+            }
             stores.environment.bind(SPECULA_BINDING_ENVIRONMENT);
         }
         stores.lights.bind(state);
