@@ -12,7 +12,8 @@
 layout(binding = SPECULA_UNIT_RESIDUAL_CUBE) uniform samplerCube uResidualCube;
 layout(binding = SPECULA_UNIT_RESIDUAL_PREFILTERED) uniform samplerCube uResidualPrefiltered;
 
-// Σ f_s(l_i, v) (n·l_i) Φ_i over the sources (Φ_i: the source's radiance × solid angle, lux at
+// Σ f_s(l_i, v) (n·l_i) Φ_i over the first IBL_SOURCE_SPECULAR_COUNT sources (those that hold 98 %
+// of the sources' flux; the rest stay in the residual map) (Φ_i: the source's radiance × solid angle, lux at
 // normal incidence), with the material's own D, V and F; n and v in world space.
 vec3 brightSourcesSpecular(SurfaceBrdf s, vec3 n, vec3 v, ThinFilm film)
 {
@@ -21,7 +22,7 @@ vec3 brightSourcesSpecular(SurfaceBrdf s, vec3 n, vec3 v, ThinFilm film)
     vec3 ne = toEnvironment(n), ve = toEnvironment(v);
     float NoV = max(dot(ne, ve), 1e-4);
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < IBL_SOURCE_COUNT; ++i) {
+    for (int i = 0; i < IBL_SOURCE_SPECULAR_COUNT; ++i) {
         vec3 l = directions[i];
         float NoL = dot(ne, l);
         if (NoL <= 0.0) continue;

@@ -32,11 +32,12 @@ std::string BakeSettings::key() const
     // The bake shaders, as compiled (includes resolved), are part of the key: editing one makes
     // a new cache entry rather than reading a stale one. v2: bump when the CPU side of the bake
     // (the spherical harmonics and irradiance sources of EnvironmentMap) or the file layout
-    // changes (v2: the irradiance cube; v3: the bright sources' residual cube and prefiltered levels).
+    // changes (v2: the irradiance cube; v3: the bright sources' residual cube and prefiltered levels; v4: with the count of the
+    // sources the specular lobe takes).
     const uint64_t shaders = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/equirect_to_cube.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/irradiance.comp", {}).text);
-    return fmt::format("v3-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
+    return fmt::format("v4-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
                        kIrradianceSourceWidth, uint32_t(shaders ^ (shaders >> 32)));
 }
 
@@ -209,7 +210,7 @@ struct ImageBasedLighting::Impl {
     // With brightSourcesSpecular: the cube less the bright sources, and the prefiltered chain's
     // levels from kResidualFirstLevel on made from it.
     gl::Texture residualCube, residualPrefiltered;
-    bool sourcesSpecular = false;
+    int specularSources = 0; // the first this many bright sources; 0: none
     /// DFG tables by dfgKey of their variant, made on first use; the compute program is
     /// compiled only to bake (a table read from the disk cache needs none) and not kept.
     std::map<int, gl::Texture> luts;
@@ -313,9 +314,12 @@ struct ImageBasedLighting::Impl {
         // The specular lobe's bright sources (ibl/bright_sources.glsl): the map less them.
         residualCube = gl::Texture();
         residualPrefiltered = gl::Texture();
-        sourcesSpecular = !bright.empty() && brightFluxShare(map, bright) >= kSourcesSpecularShare;
-        if (sourcesSpecular && s.prefilterLevels > kResidualFirstLevel) {
-            residualCube = cubeFrom(state, withoutBrightSources(map, split), s.cubeSize, "environment cube less its bright sources");
+        specularSources = leadingSourceCount(bright);
+        if (bright.empty() || brightFluxShare(map, bright, specularSources) < kSourcesSpecularShare) specularSources = 0;
+        if (specularSources > 0) log::info("the specular lobe takes {} of the {} bright sources as lights", specularSources, bright.size());
+        if (specularSources > 0 && s.prefilterLevels > kResidualFirstLevel) {
+            residualCube = cubeFrom(state, withoutBrightSources(map, split, specularSources), s.cubeSize,
+                                    "environment cube less its bright sources");
             gl::TextureDesc desc = prefilteredDesc;
             desc.width = desc.height = std::max(s.prefilterSize >> kResidualFirstLevel, 1);
             desc.levels = s.prefilterLevels - kResidualFirstLevel;
@@ -323,20 +327,21 @@ struct ImageBasedLighting::Impl {
             residualPrefiltered = gl::Texture(desc);
             prefilterLevels(state, residualCube, residualPrefiltered, kResidualFirstLevel, s, lap);
         } else {
-            sourcesSpecular = false;
+            specularSources = 0;
         }
         log::info("bake stages: {}", stages);
     }
 
-    /// The cache's residual textures (after the bright sources): a flag, then both or none.
+    /// The cache's residual textures (after the bright sources): the specular sources' count,
+    /// then both textures unless it is 0.
     bool readResidual(std::ifstream& in)
     {
         int32_t flag = -1;
         residualCube = gl::Texture();
         residualPrefiltered = gl::Texture();
-        if (!in.read(reinterpret_cast<char*>(&flag), sizeof flag) || (flag != 0 && flag != 1)) return false;
-        sourcesSpecular = flag == 1;
-        return !sourcesSpecular || (readTexture(in, residualCube, "environment cube less its bright sources", gl::Format::RGBA16F, 4) &&
+        if (!in.read(reinterpret_cast<char*>(&flag), sizeof flag) || flag < 0 || flag > int32_t(bright.size())) return false;
+        specularSources = flag;
+        return specularSources == 0 || (readTexture(in, residualCube, "environment cube less its bright sources", gl::Format::RGBA16F, 4) &&
                                     readTexture(in, residualPrefiltered, "prefiltered environment less its bright sources",
                                                 gl::Format::RGBA16F, 4));
     }
@@ -399,7 +404,7 @@ const gl::Texture& ImageBasedLighting::cube() const { return mImpl->cube; }
 const gl::Texture& ImageBasedLighting::prefiltered() const { return mImpl->prefiltered; }
 const gl::Texture& ImageBasedLighting::irradiance() const { return mImpl->irradiance; }
 const std::vector<IrradianceSource>& ImageBasedLighting::brightSources() const { return mImpl->bright; }
-bool ImageBasedLighting::brightSourcesSpecular() const { return mImpl->sourcesSpecular; }
+int ImageBasedLighting::specularSourceCount() const { return mImpl->specularSources; }
 const gl::Texture& ImageBasedLighting::residualCube() const { return mImpl->residualCube; }
 const gl::Texture& ImageBasedLighting::residualPrefiltered() const { return mImpl->residualPrefiltered; }
 void ImageBasedLighting::setLutCacheDirectory(const fs::path& directory) { mImpl->lutCacheDirectory = directory; }
@@ -450,7 +455,7 @@ BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const Environmen
             writeTextures(out, r.irradiance);
             out.write(reinterpret_cast<const char*>(r.sh.data()), sizeof(Sh9));
             writeBright(out, r.bright);
-            const int32_t residual = r.sourcesSpecular ? 1 : 0;
+            const int32_t residual = r.specularSources;
             out.write(reinterpret_cast<const char*>(&residual), sizeof residual);
             if (residual) {
                 writeTextures(out, r.residualCube);

@@ -47,10 +47,13 @@ public:
     /// The environment's brightest parts, taken out of the irradiance cube and summed per pixel
     /// (EnvironmentData::bright*), at most kIrradianceBrightSources.
     const std::vector<IrradianceSource>& brightSources() const;
-    /// Whether the specular lobe takes the bright sources as lights too (ibl/importance.glsl):
-    /// when they hold at least kSourcesSpecularShare of the map's flux (a studio's softboxes, a
-    /// sun), where the cube's box mips would spread them across a rough lobe's horizon.
-    bool brightSourcesSpecular() const;
+    /// How many of the bright sources (the first, brightest) the specular lobe takes as lights
+    /// too (ibl/bright_sources.glsl): those holding 98 % of the sources' flux
+    /// (leadingSourceCount), when they hold at least kSourcesSpecularShare of the map's (a
+    /// studio's softboxes, a sun), where box mips or the prefilter would spread them across a
+    /// rough lobe's horizon; else 0.
+    int specularSourceCount() const;
+    bool brightSourcesSpecular() const { return specularSourceCount() > 0; }
     static constexpr float kSourcesSpecularShare = 0.2f;
     /// The environment cube less what the bright sources stand for (their texels black), with
     /// box-filtered mips, and the prefiltered chain's levels kResidualFirstLevel.. made from it

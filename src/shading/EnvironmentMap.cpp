@@ -272,18 +272,21 @@ IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount, int 
     return split;
 }
 
-EnvironmentMap withoutBrightSources(const EnvironmentMap& map, const IrradianceSplit& split)
+EnvironmentMap withoutBrightSources(const EnvironmentMap& map, const IrradianceSplit& split, int count)
 {
     EnvironmentMap rest = map;
-    for (const glm::ivec2& block : split.brightBlocks)
+    const size_t n = count < 0 ? split.brightBlocks.size() : std::min(split.brightBlocks.size(), size_t(count));
+    for (size_t k = 0; k < n; ++k) {
+        const glm::ivec2 block = split.brightBlocks[k];
         for (int y = block.y; y < std::min(block.y + split.blockSize, map.height); ++y)
             for (int x = block.x; x < std::min(block.x + split.blockSize, map.width); ++x)
                 rest.texels[size_t(y) * size_t(map.width) + size_t(x)] = glm::vec3(0.0f);
-    rest.key = map.key + "-without-bright";
+    }
+    rest.key = map.key + "-without-bright-" + std::to_string(n);
     return rest;
 }
 
-float brightFluxShare(const EnvironmentMap& map, const std::vector<IrradianceSource>& bright)
+float brightFluxShare(const EnvironmentMap& map, const std::vector<IrradianceSource>& bright, int count)
 {
     const glm::dvec3 weights(0.2126, 0.7152, 0.0722);
     double total = 0.0;
@@ -295,8 +298,22 @@ float brightFluxShare(const EnvironmentMap& map, const std::vector<IrradianceSou
         total += row * solidAngle;
     }
     double part = 0.0;
-    for (const IrradianceSource& s : bright) part += glm::dot(glm::dvec3(s.flux), weights);
+    const size_t n = count < 0 ? bright.size() : std::min(bright.size(), size_t(count));
+    for (size_t k = 0; k < n; ++k) part += glm::dot(glm::dvec3(bright[k].flux), weights);
     return total > 0.0 ? float(part / total) : 0.0f;
+}
+
+int leadingSourceCount(const std::vector<IrradianceSource>& bright, float fraction)
+{
+    const glm::vec3 weights(0.2126f, 0.7152f, 0.0722f);
+    double total = 0.0;
+    for (const IrradianceSource& s : bright) total += glm::dot(s.flux, weights);
+    double running = 0.0;
+    for (size_t k = 0; k < bright.size(); ++k) {
+        running += glm::dot(bright[k].flux, weights);
+        if (running >= double(fraction) * total) return int(k + 1);
+    }
+    return int(bright.size());
 }
 
 std::vector<glm::vec3> irradianceCube(const std::vector<IrradianceSource>& sources, int size)

@@ -98,10 +98,17 @@ IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount = kIr
 /// `map` less what `split`'s bright sources stand for (their texels black): the environment the
 /// specular lobe reads from the cube where shading adds the bright sources as lights
 /// (ibl/ibl.glsl: brightSourcesSpecular), so that no energy is lost or counted twice.
-EnvironmentMap withoutBrightSources(const EnvironmentMap& map, const IrradianceSplit& split);
+/// Only the first `count` sources (all: -1) are taken out.
+EnvironmentMap withoutBrightSources(const EnvironmentMap& map, const IrradianceSplit& split, int count = -1);
 
-/// The share of the map's flux (luminance × solid angle over the sphere) in `bright`.
-float brightFluxShare(const EnvironmentMap& map, const std::vector<IrradianceSource>& bright);
+/// The share of the map's flux (luminance × solid angle over the sphere) in the first `count`
+/// sources of `bright` (all: -1).
+float brightFluxShare(const EnvironmentMap& map, const std::vector<IrradianceSource>& bright, int count = -1);
+
+/// How many of `bright` (brightest first, as splitIrradiance orders them) hold `fraction` of
+/// their luminance flux: the specular lobe's lights (a sun is a few blocks of 32; the rest,
+/// sky beside it, would cost a BRDF evaluation each for little).
+int leadingSourceCount(const std::vector<IrradianceSource>& bright, float fraction = 0.98f);
 
 /// The irradiance cube (shaders/ibl/irradiance.comp bakes it on the GPU; this is its CPU
 /// twin): irradianceAt the centre of each texel of six `size`² faces. Face after face, rows

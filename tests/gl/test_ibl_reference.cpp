@@ -175,7 +175,10 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
                     // the studio's copper is 12-48 % off in importance and 18-27 % in the split
                     // sum, and fails these.
                     const bool importance = mode == render::IblSpecular::Importance;
-                    const double bound = metal && roughness == 0.0f ? 0.02 : importance ? 0.07 : 0.16;
+                    // The smooth dielectric's diffuse coupling (docs/ibl.md): 1 - E(n.v), not the
+                    // glTF BRDF's per-direction 1 - F(v.h), which reflects more than it receives
+                    // near grazing: 3.7-7.8 % in both modes.
+                    const double bound = roughness == 0.0f ? (metal ? 0.02 : 0.09) : importance ? 0.07 : 0.16;
                     row += fmt::format(" {:.2f} % |", 100.0 * error.relative());
                     results.push_back({std::string(mapName) + (metal ? " copper" : " dielectric") + " roughness " +
                                            fmt::format("{}", roughness) + " " + render::iblSpecularName(mode),

@@ -96,7 +96,7 @@ struct ForwardPass::Impl {
     // The environment's bright sources, written into every forward program as constants
     // (ibl/ibl.glsl's IBL_SOURCE_*): the programs are made again when they change.
     std::vector<IrradianceSource> sources;
-    bool sourcesSpecular = false; // IBL_SOURCE_SPECULAR: the specular lobe takes them as lights too
+    int specularSources = 0; // IBL_SOURCE_SPECULAR_COUNT: the specular lobe takes the first as lights too
     std::vector<std::string> sourceDefines{"IBL_SOURCE_COUNT 0"};
 
     void updateSources(const FrameContext& frame)
@@ -107,13 +107,14 @@ struct ForwardPass::Impl {
         const bool same = count == sources.size() && std::equal(sources.begin(), sources.end(), all.begin(), [](const auto& a, const auto& b) {
             return a.direction == b.direction && a.flux == b.flux;
         });
-        const bool specular = frame.stores.ibl.hasEnvironment() && frame.stores.ibl.brightSourcesSpecular() && count > 0;
-        if (same && specular == sourcesSpecular) return;
+        const int specular = frame.stores.ibl.hasEnvironment() ? std::min(frame.stores.ibl.specularSourceCount(), int(count)) : 0;
+        if (same && specular == specularSources) return;
         sources.assign(all.begin(), all.begin() + std::ptrdiff_t(count));
-        sourcesSpecular = specular;
+        specularSources = specular;
         sourceDefines = irradianceSourceDefines(sources);
-        if (sourcesSpecular) {
+        if (specularSources > 0) {
             sourceDefines.push_back("IBL_SOURCE_SPECULAR");
+            sourceDefines.push_back(fmt::format("IBL_SOURCE_SPECULAR_COUNT {}", specularSources));
             sourceDefines.push_back(fmt::format("IBL_RESIDUAL_FIRST_LEVEL {}", ImageBasedLighting::kResidualFirstLevel));
         }
         programs.clear(); // made with the old constants; this frame's materials take new ones
