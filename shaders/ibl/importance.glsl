@@ -11,8 +11,9 @@
 #include "bright_sources.glsl"
 
 // Chosen by measurement against the Monte Carlo reference (docs/ibl.md, copper under
-// venice_1k, roughness 1): 32 samples 8.7 % mean error, 64 4.9 %, 128 3.1 %, 256 2.7 % (the
-// reference's own noise is about 3 % there); each doubling costs about 1.4× the forward pass.
+// venice_1k, roughness 1): 32 samples 8.7 % mean error, 64 4.9 %, 128 3.1 %, 256 2.7 % (that
+// reference's own noise was about 3 % there; against the noise-free quadrature that replaced
+// it, 64 samples are 4.3 %); each doubling costs about 1.4× the forward pass.
 #ifndef IBL_IMPORTANCE_SAMPLES
 #define IBL_IMPORTANCE_SAMPLES 64
 #endif

@@ -32,8 +32,8 @@ std::string BakeSettings::key() const
     // The bake shaders, as compiled (includes resolved), are part of the key: editing one makes
     // a new cache entry rather than reading a stale one. v2: bump when the CPU side of the bake
     // (the spherical harmonics and irradiance sources of EnvironmentMap) or the file layout
-    // changes (v2: the irradiance cube; v3: the bright sources' residual cube and prefiltered levels; v4: with the count of the
-    // sources the specular lobe takes).
+    // changes (v2: the irradiance cube; v3: the bright sources' residual cube and prefiltered
+    // levels; v4: with the count of the sources the specular lobe takes).
     const uint64_t shaders = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/equirect_to_cube.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/irradiance.comp", {}).text);
@@ -315,11 +315,12 @@ struct ImageBasedLighting::Impl {
         residualCube = gl::Texture();
         residualPrefiltered = gl::Texture();
         specularSources = leadingSourceCount(bright);
-        if (bright.empty() || brightFluxShare(map, bright, specularSources) < kSourcesSpecularShare) specularSources = 0;
+        if (bright.empty() || brightFluxShare(split, specularSources) < kSourcesSpecularShare) specularSources = 0;
         if (specularSources > 0) log::info("the specular lobe takes {} of the {} bright sources as lights", specularSources, bright.size());
         if (specularSources > 0 && s.prefilterLevels > kResidualFirstLevel) {
             residualCube = cubeFrom(state, withoutBrightSources(map, split, specularSources), s.cubeSize,
                                     "environment cube less its bright sources");
+            lap("residual cube");
             gl::TextureDesc desc = prefilteredDesc;
             desc.width = desc.height = std::max(s.prefilterSize >> kResidualFirstLevel, 1);
             desc.levels = s.prefilterLevels - kResidualFirstLevel;

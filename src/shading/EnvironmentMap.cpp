@@ -286,20 +286,17 @@ EnvironmentMap withoutBrightSources(const EnvironmentMap& map, const IrradianceS
     return rest;
 }
 
-float brightFluxShare(const EnvironmentMap& map, const std::vector<IrradianceSource>& bright, int count)
+float brightFluxShare(const IrradianceSplit& split, int count)
 {
     const glm::dvec3 weights(0.2126, 0.7152, 0.0722);
-    double total = 0.0;
-    for (int y = 0; y < map.height; ++y) {
-        const double solidAngle = 2.0 * kPi / double(map.width) *
-                                  (std::cos(kPi * double(y) / double(map.height)) - std::cos(kPi * double(y + 1) / double(map.height)));
-        double row = 0.0;
-        for (int x = 0; x < map.width; ++x) row += glm::dot(glm::dvec3(map.at(x, y)), weights);
-        total += row * solidAngle;
+    const size_t n = count < 0 ? split.bright.size() : std::min(split.bright.size(), size_t(count));
+    double part = 0.0, total = 0.0;
+    for (size_t k = 0; k < split.bright.size(); ++k) {
+        const double flux = glm::dot(glm::dvec3(split.bright[k].flux), weights);
+        total += flux;
+        if (k < n) part += flux;
     }
-    double part = 0.0;
-    const size_t n = count < 0 ? bright.size() : std::min(bright.size(), size_t(count));
-    for (size_t k = 0; k < n; ++k) part += glm::dot(glm::dvec3(bright[k].flux), weights);
+    for (const IrradianceSource& s : split.cube) total += glm::dot(glm::dvec3(s.flux), weights);
     return total > 0.0 ? float(part / total) : 0.0f;
 }
 

@@ -97,13 +97,13 @@ IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount = kIr
 
 /// `map` less what `split`'s bright sources stand for (their texels black): the environment the
 /// specular lobe reads from the cube where shading adds the bright sources as lights
-/// (ibl/ibl.glsl: brightSourcesSpecular), so that no energy is lost or counted twice.
+/// (ibl/bright_sources.glsl), so that no energy is lost or counted twice.
 /// Only the first `count` sources (all: -1) are taken out.
 EnvironmentMap withoutBrightSources(const EnvironmentMap& map, const IrradianceSplit& split, int count = -1);
 
 /// The share of the map's flux (luminance × solid angle over the sphere) in the first `count`
-/// sources of `bright` (all: -1).
-float brightFluxShare(const EnvironmentMap& map, const std::vector<IrradianceSource>& bright, int count = -1);
+/// of `split`'s bright sources (all: -1): the bright and the cube sources hold all of it.
+float brightFluxShare(const IrradianceSplit& split, int count = -1);
 
 /// How many of `bright` (brightest first, as splitIrradiance orders them) hold `fraction` of
 /// their luminance flux: the specular lobe's lights (a sun is a few blocks of 32; the rest,
