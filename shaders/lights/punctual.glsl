@@ -21,18 +21,43 @@ float spotAttenuation(vec3 lightDirection, vec3 toLight, vec2 scaleOffset)
 
 // Incident radiance scale (illuminance on a surface facing the light, lux) and the unit
 // direction l from the surface point towards the light.
+//
+// A kind of light the frame has none of is compiled out (NO_DIRECTIONAL_LIGHTS,
+// NO_POINT_LIGHTS, NO_SPOT_LIGHTS: shading/VariantKey's LightVariant): a CPU rasteriser runs
+// both sides of a branch on the light's type, so a frame of point lights only pays for them
+// alone. A frame with one kind has no branch on the type at all.
+#if defined(NO_POINT_LIGHTS) && defined(NO_SPOT_LIGHTS)
+#define SPECULA_ONLY_DIRECTIONAL_LIGHTS
+#endif
 vec3 lightIlluminance(GpuLight light, vec3 worldPosition, out vec3 l)
 {
-    uint type = uint(light.directionType.w + 0.5);
     vec3 intensity = light.colorIntensity.rgb * light.colorIntensity.a;
+#if defined(SPECULA_ONLY_DIRECTIONAL_LIGHTS) && defined(NO_DIRECTIONAL_LIGHTS)
+    // No light of any kind: nothing calls this (LIGHT_COUNT 0), but it must compile.
+    l = vec3(0.0, 0.0, 1.0);
+    return vec3(0.0);
+#elif defined(SPECULA_ONLY_DIRECTIONAL_LIGHTS)
+    l = -light.directionType.xyz;
+    return intensity;
+#else
+#if !defined(NO_DIRECTIONAL_LIGHTS) || (!defined(NO_POINT_LIGHTS) && !defined(NO_SPOT_LIGHTS))
+    uint type = uint(light.directionType.w + 0.5);
+#endif
+#if !defined(NO_DIRECTIONAL_LIGHTS)
     if (type == SPECULA_LIGHT_DIRECTIONAL) {
         l = -light.directionType.xyz;
         return intensity;
     }
+#endif
     vec3 toLight = light.positionRange.xyz - worldPosition;
     float distance = length(toLight);
     l = toLight / max(distance, 1e-8);
     float attenuation = rangeAttenuation(light.positionRange.w, distance);
+#if !defined(NO_SPOT_LIGHTS) && defined(NO_POINT_LIGHTS)
+    attenuation *= spotAttenuation(light.directionType.xyz, l, light.spot.xy);
+#elif !defined(NO_SPOT_LIGHTS)
     if (type == SPECULA_LIGHT_SPOT) attenuation *= spotAttenuation(light.directionType.xyz, l, light.spot.xy);
+#endif
     return intensity * attenuation;
+#endif
 }

@@ -27,14 +27,20 @@ constexpr uint64_t kBlendTransparent = uint64_t(1) << 39, kTransmission = uint64
 constexpr uint64_t kClearcoat = uint64_t(1) << 42;
 constexpr uint64_t kSheen = uint64_t(1) << 43, kAnisotropy = uint64_t(1) << 44, kIridescence = uint64_t(1) << 45;
 constexpr uint64_t kDispersion = uint64_t(1) << 46;
-// Bits 16-19 are free (the debug view's field was there while it had 4 bits).
+// The kinds of light a frame has not; bit 19 is free (the debug view's field was there while it
+// had 4 bits).
+constexpr uint64_t kNoDirectional = 1u << 16, kNoPoint = 1u << 17, kNoSpot = 1u << 18;
+// LIGHT_COUNT: 0 = none (the count is read from the light buffer), else the count + 1.
+constexpr int kLightCountShift = 52, kLightCountBits = 5;
+static_assert(LightVariant::kMaxConstantCount + 1 < (1 << kLightCountBits));
 constexpr int kDebugShift = 47, kModelShift = 20, kDistributionShift = 23, kGeometryShift = 25, kFresnelShift = 28,
               kDiffuseShift = 30;
 constexpr uint64_t field(int shift, int bits) { return ((uint64_t(1) << bits) - 1) << shift; }
 constexpr uint64_t kDebugMask = field(kDebugShift, 5), kModelMask = field(kModelShift, 3),
                    kDistributionMask = field(kDistributionShift, 2), kGeometryMask = field(kGeometryShift, 3),
                    kFresnelMask = field(kFresnelShift, 2), kDiffuseMask = field(kDiffuseShift, 2),
-                   kShadowFilterMask = field(kShadowFilterShift, 2), kShadowTapsMask = field(kShadowTapsShift, 2);
+                   kShadowFilterMask = field(kShadowFilterShift, 2), kShadowTapsMask = field(kShadowTapsShift, 2),
+                   kLightCountMask = field(kLightCountShift, kLightCountBits);
 // The shadow filter's field: PCF (the default) is 0 and has no define; the taps' field: 16 is 0.
 constexpr uint64_t kFilterHard = 1, kFilterPcss = 2, kTaps8 = 1, kTaps32 = 2;
 template <typename E>
@@ -85,6 +91,9 @@ constexpr std::array kTable = {
     VariantDefine{kDoomIndexed, kDoomIndexed, "DOOM_INDEXED", K::FrameFeature},
     VariantDefine{kShadows, kShadows, "SHADOWS", K::FrameFeature},
     VariantDefine{kLightsAll, kLightsAll, "LIGHTS_ALL", K::FrameFeature},
+    VariantDefine{kNoDirectional, kNoDirectional, "NO_DIRECTIONAL_LIGHTS", K::FrameFeature},
+    VariantDefine{kNoPoint, kNoPoint, "NO_POINT_LIGHTS", K::FrameFeature},
+    VariantDefine{kNoSpot, kNoSpot, "NO_SPOT_LIGHTS", K::FrameFeature},
     VariantDefine{kShadowDirectional, kShadowDirectional, "SHADOW_DIRECTIONAL", K::FrameFeature},
     VariantDefine{kShadowSpot, kShadowSpot, "SHADOW_SPOT", K::FrameFeature},
     VariantDefine{kShadowPoint, kShadowPoint, "SHADOW_POINT", K::FrameFeature},
@@ -112,6 +121,8 @@ constexpr std::array kTable = {
     VariantDefine{kOit, kOit, "OIT", K::FrameFeature},
 };
 static_assert((kFeatureMask & (kIbl | kIblImportance | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
+static_assert(((kNoDirectional | kNoPoint | kNoSpot) & (kFeatureMask | kIbl | kIblImportance | kLightsAll | kModelMask)) == 0);
+static_assert((kLightCountMask & (kDebugMask | kDispersion | kIridescence)) == 0 && kLightCountShift + kLightCountBits <= 64);
 static_assert(uint64_t(kLastDebugView) < (uint64_t(1) << 5)); // the debug field's 5 bits
 static_assert((kDebugMask & (kBlendTransparent | kTransmission | kOit | kClearcoat | kSheen | kAnisotropy | kIridescence | kDispersion)) == 0);
 static_assert(((kShadowTapsMask | kShadowFilterMask) & (kBlendTransparent | kTransmission | kOit)) == 0);
@@ -131,7 +142,7 @@ bool isMaterialDebugView(DebugView view)
 
 ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& shading, DebugView debugView, IblVariant ibl,
                                     bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows,
-                                    bool allLights, bool oit)
+                                    const LightVariant& lights, bool oit)
 {
     uint64_t key = features & kFeatureMask;
     key |= at(kModelShift, shading.model);
@@ -169,7 +180,13 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
     if (energyCompensation) key |= kEnergyCompensation;
     if (ssao) key |= kSsao;
     if (doomIndexed) key |= kDoomIndexed;
-    if (allLights) key |= kLightsAll;
+    if (lights.all) {
+        key |= kLightsAll;
+        if (lights.count >= 0 && lights.count <= LightVariant::kMaxConstantCount) key |= uint64_t(lights.count + 1) << kLightCountShift;
+    }
+    if (!lights.directional) key |= kNoDirectional;
+    if (!lights.point) key |= kNoPoint;
+    if (!lights.spot) key |= kNoSpot;
     if (shadows.active()) {
         key |= kShadows;
         if (shadows.directional) key |= kShadowDirectional;
@@ -209,6 +226,7 @@ std::vector<std::string> ForwardVariant::defines() const
     std::vector<std::string> out;
     for (const VariantDefine& row : kTable)
         if ((key & row.mask) == row.value) out.emplace_back(row.define);
+    if (const uint64_t count = (key & kLightCountMask) >> kLightCountShift; count > 0) out.push_back(fmt::format("LIGHT_COUNT {}u", count - 1));
     return out;
 }
 

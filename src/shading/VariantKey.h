@@ -34,6 +34,22 @@ struct ShadowVariant {
     bool operator==(const ShadowVariant&) const = default;
 };
 
+/// What the frame's lights ask of the forward program (lights/punctual.glsl, light_list.glsl):
+/// the kinds it has — a kind no light has is compiled out (NO_DIRECTIONAL_LIGHTS,
+/// NO_POINT_LIGHTS, NO_SPOT_LIGHTS) — and whether every light is evaluated at every shading
+/// point (LIGHTS_ALL, the brute-force frame), then, when they are few, how many (LIGHT_COUNT: a
+/// constant trip count, so the loop is unrolled). Compiled in for ShadowVariant's reason: on
+/// llvmpipe the kinds' branches cost 10 % of a lit forward pass and the loop's dynamic trip
+/// count a further 15 % (docs/performance.md). The price: adding or removing a light, or
+/// changing its kind, makes the forward programs again; editing one does not.
+struct LightVariant {
+    bool all = false; ///< LIGHTS_ALL
+    int count = -1;   ///< with `all`: the frame's light count when at most kMaxConstantCount, else -1
+    bool directional = true, point = true, spot = true;
+    static constexpr int kMaxConstantCount = 16;
+    bool operator==(const LightVariant&) const = default;
+};
+
 /// Image-based light in the forward program: none, the split sum (IBL), or the split sum's
 /// diffuse with the specular lobe importance-sampled per pixel (IBL + IBL_IMPORTANCE).
 enum class IblVariant : uint8_t { None, SplitSum, Importance };
@@ -54,17 +70,17 @@ struct ForwardVariant {
     /// resolved shading). A model other than the physically based one has no BRDF choices, so
     /// its key holds none and variants that differ only there share one program. `shadows`:
     /// the frame's shadow maps (SHADOWS and SHADOW_*: lights/shadow.glsl samples them).
-    /// `allLights`: every light at every shading point, no cluster lists (LIGHTS_ALL, the
-    /// brute-force frame). `oit`: blended draws write weighted blended OIT's targets (OIT).
+    /// `lights`: the frame's kinds of light, LIGHTS_ALL and LIGHT_COUNT. `oit`: blended draws write weighted blended OIT's targets (OIT).
     static ForwardVariant make(uint32_t features, const ResolvedShading& shading, DebugView debugView, IblVariant ibl,
                                bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows = {},
-                               bool allLights = false, bool oit = false);
+                               const LightVariant& lights = {}, bool oit = false);
 
     ResolvedShading shading() const;
     /// The material or BRDF debug view the key selects, if any.
     bool debugView() const;
     /// Whether the key has KHR_materials_sheen's lobe (SHEEN): its program samples the sheen albedo table.
     bool sheen() const;
+    /// The table's defines, then LIGHT_COUNT (a field with a value, outside the table).
     std::vector<std::string> defines() const;
     /// The defines joined by ';' (program labels).
     std::string name() const;

@@ -34,6 +34,15 @@ struct Case {
     render::BrdfGeometry geometry = render::BrdfGeometry::SmithGGX;
     scene::MaterialShading shading{}; ///< the material's model and BRDF terms (scene file)
     std::optional<float> ior{};
+    /// More lights in the same frame, each with its position and target; the CPU sums them all.
+    struct Placed {
+        scene::Light light;
+        glm::vec3 position, target;
+    };
+    std::vector<Placed> more{};
+    /// LightCulling::None: every light everywhere, LIGHTS_ALL with their count a constant
+    /// (LIGHT_COUNT); the first frame is otherwise clustered, its count read from the buffer.
+    render::LightCulling culling = render::LightCulling::Clustered;
 };
 
 struct Result {
@@ -58,7 +67,9 @@ Result renderAndCompare(const Case& c)
     material.shading = c.shading;
     material.ior = c.ior;
     scene::addShape(s, scene::makeUvSphere(1.0f, 256, 128), material, glm::mat4(1.0f), "sphere");
-    scene::addLight(s, c.light, c.lightPosition, c.lightTarget - c.lightPosition);
+    std::vector<Case::Placed> lights{{c.light, c.lightPosition, c.lightTarget}};
+    lights.insert(lights.end(), c.more.begin(), c.more.end());
+    for (const Case::Placed& l : lights) scene::addLight(s, l.light, l.position, l.target - l.position);
 
     render::FrameSettings settings;
     settings.width = settings.height = 96;
@@ -66,6 +77,7 @@ Result renderAndCompare(const Case& c)
     settings.tonemap = render::Tonemap::None;
     settings.brdfGeometry = c.geometry;
     settings.energyCompensation = false; // exactly the glTF BRDF, as shading/Brdf.cpp evaluates it
+    settings.lightCulling = c.culling;
     const glm::vec3 eye(0.0f, 0.0f, 4.0f);
     const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
     render::Renderer renderer;
@@ -87,8 +99,6 @@ Result renderAndCompare(const Case& c)
     const dvec3 kd = surface.baseColor * (1.0 - surface.metallic);
     const dvec3 ks = glm::mix(dvec3(0.5), surface.baseColor, surface.metallic);
     const double shininess = render::brdf::classicShininess(std::clamp(double(c.roughness), render::brdf::kMinPerceptualRoughness, 1.0));
-    const dvec3 lightPosition(c.lightPosition);
-    const dvec3 lightDirection = glm::normalize(dvec3(c.lightTarget - c.lightPosition));
 
     const glm::dmat4 inverse = test::inverseViewProjection(view);
     Result result;
@@ -100,24 +110,30 @@ Result renderAndCompare(const Case& c)
             const dvec3 v = glm::normalize(dvec3(eye) - p);
             if (glm::dot(n, v) < 0.25) continue; // silhouette pixels straddle facets and background
 
-            dvec3 l;
-            double illuminance = c.light.intensity;
-            if (c.light.type == scene::Light::Type::Directional) {
-                l = -lightDirection;
-            } else {
-                const dvec3 toLight = lightPosition - p;
-                const double distance = glm::length(toLight);
-                l = toLight / distance;
-                illuminance *= render::brdf::rangeAttenuation(c.light.range, distance);
-                if (c.light.type == scene::Light::Type::Spot)
-                    illuminance *= render::brdf::spotAttenuation(lightDirection, l, c.light.innerConeAngle, c.light.outerConeAngle);
+            dvec3 expected(0.0);
+            for (const Case::Placed& placed : lights) {
+                const scene::Light& light = placed.light;
+                const dvec3 lightPosition(placed.position);
+                const dvec3 lightDirection = glm::normalize(dvec3(placed.target - placed.position));
+                dvec3 l;
+                double illuminance = light.intensity;
+                if (light.type == scene::Light::Type::Directional) {
+                    l = -lightDirection;
+                } else {
+                    const dvec3 toLight = lightPosition - p;
+                    const double distance = glm::length(toLight);
+                    l = toLight / distance;
+                    illuminance *= render::brdf::rangeAttenuation(light.range, distance);
+                    if (light.type == scene::Light::Type::Spot)
+                        illuminance *= render::brdf::spotAttenuation(lightDirection, l, light.innerConeAngle, light.outerConeAngle);
+                }
+                const double NoL = glm::dot(n, l);
+                if (model == scene::ShadingModel::Phong || model == scene::ShadingModel::BlinnPhong)
+                    expected += render::brdf::evaluateClassic(kd, ks, shininess, model == scene::ShadingModel::BlinnPhong, n, v, l) *
+                                dvec3(light.color) * illuminance;
+                else if (NoL > 0.0)
+                    expected += render::brdf::evaluate(surface, n, v, l) * dvec3(light.color) * illuminance * NoL;
             }
-            const double NoL = glm::dot(n, l);
-            dvec3 expected = NoL > 0.0 ? render::brdf::evaluate(surface, n, v, l) * dvec3(c.light.color) * illuminance * NoL
-                                       : dvec3(0.0);
-            if (model == scene::ShadingModel::Phong || model == scene::ShadingModel::BlinnPhong)
-                expected = render::brdf::evaluateClassic(kd, ks, shininess, model == scene::ShadingModel::BlinnPhong, n, v, l) *
-                           dvec3(c.light.color) * illuminance;
             ++result.tested;
             if (expected.x > 0.01) ++result.lit;
             for (int ch = 0; ch < 3; ++ch) {
@@ -173,6 +189,42 @@ TEST_F(GlTest, DirectionalLitSphereMatchesCpu)
     c.light.type = scene::Light::Type::Directional;
     c.light.intensity = 3.0f;
     renderAndCompare(c);
+}
+
+// Every kind of light in one frame, and each pair of kinds: the forward programs compile in only
+// the kinds a frame has (NO_*_LIGHTS) and, with every light evaluated everywhere, their count
+// as a constant (LIGHT_COUNT). Each frame against the CPU's sum of its lights, clustered (the
+// count read from the buffer) and brute force (the count a constant).
+TEST_F(GlTest, MixedLightKindsMatchCpuWithAndWithoutAConstantCount)
+{
+    scene::Light point, spot, sun;
+    point.type = scene::Light::Type::Point;
+    point.intensity = 20.0f;
+    point.color = {1.0f, 0.8f, 0.6f};
+    spot.type = scene::Light::Type::Spot;
+    spot.intensity = 50.0f;
+    spot.color = {0.6f, 0.8f, 1.0f};
+    spot.range = 9.0f;
+    spot.innerConeAngle = glm::radians(10.0f);
+    spot.outerConeAngle = glm::radians(20.0f);
+    sun.type = scene::Light::Type::Directional;
+    sun.intensity = 1.5f;
+    const Case::Placed placedPoint{point, {2.0f, 2.5f, 3.0f}, {0, 0, 0}};
+    const Case::Placed placedSpot{spot, {-1.0f, 3.0f, 2.5f}, {-0.3f, 0.2f, 0.0f}};
+    const Case::Placed placedSun{sun, {0, 0, 0}, {1.0f, -0.5f, -1.0f}};
+    const std::vector<std::vector<Case::Placed>> sets = {
+        {placedPoint, placedSpot, placedSun}, {placedPoint, placedSpot}, {placedSpot, placedSun}, {placedSun, placedPoint},
+        {placedPoint, placedPoint, placedSpot, placedSun, placedSpot}};
+    for (const render::LightCulling culling : {render::LightCulling::Clustered, render::LightCulling::None}) {
+        for (const std::vector<Case::Placed>& set : sets) {
+            Case c{culling == render::LightCulling::None ? "mixed kinds, constant count" : "mixed kinds, clustered", set[0].light,
+                   set[0].position, set[0].target, {0.7f, 0.6f, 0.5f}, 0.4f, 0.45f};
+            c.more.assign(set.begin() + 1, set.end());
+            c.culling = culling;
+            const Result r = renderAndCompare(c);
+            EXPECT_GT(r.lit, 1000) << set.size() << " lights";
+        }
+    }
 }
 
 namespace {

@@ -47,6 +47,10 @@ std::vector<Variant> variants()
             flags.push_back(row.define);
     }
     out.push_back({"forward/pbr.frag", flags});
+    // A few lights everywhere: their count a constant (ForwardVariant::defines, outside the table).
+    out.push_back({"forward/pbr.frag", {"LIGHTS_ALL", "LIGHT_COUNT 3u", "NO_DIRECTIONAL_LIGHTS"}});
+    out.push_back({"forward/pbr.vert", {"SHADING_GOURAUD", "LIGHTS_ALL", "LIGHT_COUNT 2u", "NO_SPOT_LIGHTS"}});
+    out.push_back({"forward/pbr.frag", {"SHADING_PHONG", "LIGHTS_ALL", "LIGHT_COUNT 0u", "NO_DIRECTIONAL_LIGHTS", "NO_POINT_LIGHTS", "NO_SPOT_LIGHTS"}});
     out.push_back({"forward/pbr.vert", {"SHADING_GOURAUD"}});
     // A Doom frame (render/DoomPass): the forward pass's and the billboards' indexed output.
     out.push_back({"forward/pbr.frag", {"SHADING_DOOM", "DOOM_INDEXED"}});

@@ -165,3 +165,25 @@ TEST(VariantKey, EveryDebugViewNamesItselfAndTheClearcoatViewsKeepTheLayer)
     EXPECT_FALSE(has(make(DebugView::Normal), "CLEARCOAT"));
     EXPECT_FALSE(has(make(DebugView::Sheen), "CLEARCOAT"));
 }
+
+// The frame's lights: a kind it has none of is compiled out, and with every light everywhere
+// (LIGHTS_ALL) a count up to 16 is a constant of the program; more lights keep the count a
+// read, and the clustered lists never have one.
+TEST(VariantKey, LightsCompileInOnlyTheKindsAndTheCountOfAFewLights)
+{
+    const auto with = [](const LightVariant& l) {
+        return ForwardVariant::make(0, {}, DebugView::None, IblVariant::None, false, false, false, {}, l).defines();
+    };
+    using V = std::vector<std::string>;
+    EXPECT_TRUE(with({}).empty()) << "every kind, clustered: the default";
+    EXPECT_EQ(with({.all = true, .count = 4, .directional = false, .spot = false}),
+              (V{"LIGHTS_ALL", "NO_DIRECTIONAL_LIGHTS", "NO_SPOT_LIGHTS", "LIGHT_COUNT 4u"}));
+    EXPECT_EQ(with({.all = true, .count = 0, .directional = false, .point = false, .spot = false}),
+              (V{"LIGHTS_ALL", "NO_DIRECTIONAL_LIGHTS", "NO_POINT_LIGHTS", "NO_SPOT_LIGHTS", "LIGHT_COUNT 0u"}));
+    EXPECT_EQ(with({.all = true, .count = 16}), (V{"LIGHTS_ALL", "LIGHT_COUNT 16u"}));
+    EXPECT_EQ(with({.all = true, .count = 17}), (V{"LIGHTS_ALL"})) << "too many to unroll";
+    EXPECT_EQ(with({.all = false, .count = 4, .point = false}), (V{"NO_POINT_LIGHTS"})) << "the lists' counts vary per cluster";
+    // Each count is its own program.
+    EXPECT_NE(ForwardVariant::make(0, {}, DebugView::None, IblVariant::None, false, false, false, {}, {.all = true, .count = 3}).key,
+              ForwardVariant::make(0, {}, DebugView::None, IblVariant::None, false, false, false, {}, {.all = true, .count = 4}).key);
+}

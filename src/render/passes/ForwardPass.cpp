@@ -92,7 +92,7 @@ struct ForwardPass::Impl {
     std::vector<DrawProgram> materialPrograms;   // this frame's, by material
     SkyboxPass skybox;
     ShadowVariant shadows;                       // this frame's SHADOWS variants
-    bool allLights = false;                      // this frame's LIGHTS_ALL
+    LightVariant lights;                         // this frame's kinds of light, LIGHTS_ALL, LIGHT_COUNT
     // The environment's bright sources, written into every forward program as constants
     // (ibl/ibl.glsl's IBL_SOURCE_*): the programs are made again when they change.
     std::vector<IrradianceSource> sources;
@@ -166,7 +166,7 @@ struct ForwardPass::Impl {
         const ResolvedShading shading = resolveShading(s.materialOverride, s.brdfGeometry, features);
         const ForwardVariant variant =
             ForwardVariant::make(features, shading, s.debugView, iblVariant(frame), s.energyCompensation, s.ssao.enabled, isDoomFrame(s),
-                                 shadows, allLights, s.transparency == Transparency::Oit);
+                                 shadows, lights, s.transparency == Transparency::Oit);
         auto it = programs.find(variant.key);
         if (it != programs.end()) return it->second;
         ForwardProgram p;
@@ -198,11 +198,12 @@ bool ForwardPass::anyDoomMaterial(const FrameContext& frame)
     });
 }
 
-const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows, bool allLights)
+const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows,
+                                                             const LightVariant& lights)
 {
     Impl& r = *mImpl;
     r.shadows = shadows;
-    r.allLights = allLights;
+    r.lights = lights;
     r.materialPrograms.clear();
     r.updateSources(frame);
     r.skybox.prepare(frame);

@@ -49,9 +49,10 @@ public:
 
     /// Each material's program for this frame (compiled on first use), and the DFG table it
     /// reads, baked on first use. `shadows`: what the frame's shadow maps ask (SHADOWS variants);
-    /// `allLights`: every light at every point (LIGHTS_ALL), not the cluster lists.
+    /// `lights`: the frame's kinds of light, and every light at every point (LIGHTS_ALL) with
+    /// their count, or the cluster lists.
     const std::vector<DrawProgram>& prepareMaterials(const FrameContext& frame, const ShadowVariant& shadows = {},
-                                                     bool allLights = false);
+                                                     const LightVariant& lights = {});
     /// The draw lists of the frame's view, sorted with prepareMaterials' programs.
     FrameDrawLists drawLists(const FrameContext& frame) const;
 

@@ -44,6 +44,19 @@ void finish(Frame& f, FramePasses& passes, const FrameContext& frame)
     if (out.msaaColor) f.graph.exportTexture(out.msaaColor);
 }
 
+/// The frame's kinds of light, and their count when every light is evaluated everywhere.
+LightVariant lightVariant(const LightBuffer& buffer, bool everyLight)
+{
+    LightVariant v{.all = everyLight, .directional = false, .point = false, .spot = false};
+    if (everyLight && buffer.count() <= LightVariant::kMaxConstantCount) v.count = buffer.count();
+    for (const PlacedLight& p : buffer.all()) {
+        v.directional |= p.light.type == scene::Light::Type::Directional;
+        v.point |= p.light.type == scene::Light::Type::Point;
+        v.spot |= p.light.type == scene::Light::Type::Spot;
+    }
+    return v;
+}
+
 /// ssao → forward → resolve → bloom → exposure → tone map → FXAA → debug view.
 void buildForward(Frame& f, FramePasses& passes, const FrameContext& frame)
 {
@@ -122,7 +135,7 @@ void buildFrame(Frame& f, FramePasses& passes, const FrameContext& frame)
     f.outputs.everyLight = everyLight;
     // Shadows first: whether any light has a map picks the forward programs.
     f.outputs.shadows = passes.shadows.addTo(f.graph, frame);
-    passes.forward.prepareMaterials(frame, passes.shadows.variant(), everyLight);
+    passes.forward.prepareMaterials(frame, passes.shadows.variant(), lightVariant(lights, everyLight));
     if (frame.settings.lodPixels > 0.0f && frame.stores.scene && !frame.stores.scene->hasLevelsOfDetail())
         frame.stores.scene->buildLevelsOfDetail();
     f.lists = passes.forward.drawLists(frame);
