@@ -141,7 +141,7 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
                                        sizeof(shared::GpuMaterial));
             boundMaterial = p.material;
         }
-        state.bindVertexArray(p.vertexArray);
+        state.bindVertexArray(p.geometry->vertexArray);
         const uint32_t first = p.indexed && !p.lods.empty() ? p.lods[size_t(command.lod)].first : 0u;
         const uint32_t count = p.indexed && !p.lods.empty() ? p.lods[size_t(command.lod)].count : p.count;
         state.drawTriangles(count, p.indexed, first);

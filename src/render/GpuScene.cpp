@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <unordered_map>
 
 #include "core/Footprint.h"
@@ -121,25 +122,36 @@ void GpuScene::buildLevelsOfDetail()
     LodChains chains;
     std::vector<scene::Primitive> sources; // kept alive: the cache compares against them
     sources.reserve(mPrimitives.size());
+    // A shared geometry gets its chain once; its other primitives take the same levels.
+    std::unordered_map<const GpuGeometry*, std::vector<scene::LodLevel>> done;
     for (GpuPrimitive& gpu : mPrimitives) {
         const size_t triangles = gpu.count / 3;
         if (triangles < scene::kLodMinTriangles) continue;
+        GpuGeometry& geometry = *gpu.geometry;
+        if (const auto it = done.find(&geometry); it != done.end()) {
+            if (it->second.size() < 2) continue;
+            gpu.indexed = true;
+            gpu.count = it->second[0].count;
+            gpu.lods = it->second;
+            continue;
+        }
         scene::Primitive& p = sources.emplace_back();
-        const std::vector<std::byte> vertices = gpu.vertices.read(0, gpu.vertices.size());
+        const std::vector<std::byte> vertices = geometry.vertices.read(0, geometry.vertices.size());
         p.vertices.resize(vertices.size() / sizeof(scene::Vertex));
         std::memcpy(p.vertices.data(), vertices.data(), p.vertices.size() * sizeof(scene::Vertex));
         if (gpu.indexed) {
-            const std::vector<std::byte> indices = gpu.indices.read(0, size_t(gpu.count) * sizeof(uint32_t));
+            const std::vector<std::byte> indices = geometry.indices.read(0, size_t(gpu.count) * sizeof(uint32_t));
             p.indices.resize(gpu.count);
             std::memcpy(p.indices.data(), indices.data(), indices.size());
         }
         const scene::LodChain& chain = lodChain(chains, p);
+        done.emplace(&geometry, chain.levels);
         if (chain.levels.size() < 2) continue;
-        gpu.indices = gl::Buffer(chain.indices.size() * sizeof(uint32_t), chain.indices.data(), gpu.name + " indices (levels of detail)");
+        geometry.indices = gl::Buffer(chain.indices.size() * sizeof(uint32_t), chain.indices.data(), gpu.name + " indices (levels of detail)");
         gpu.indexed = true;
         gpu.count = chain.levels[0].count;
         gpu.lods = chain.levels;
-        gpu.vertexArray.indexBuffer(gpu.indices);
+        geometry.vertexArray.indexBuffer(geometry.indices);
     }
 }
 
@@ -285,27 +297,50 @@ GpuScene::GpuScene(const scene::Scene& scene)
     }
     const int defaultMaterial = int(materials.size() - 1);
 
-    // Primitives, mesh by mesh.
-    auto upload = [&](const scene::Primitive& p, const std::string& name) {
-        GpuPrimitive gpu;
-        gpu.name = name;
-        gpu.vertices = gl::Buffer(p.vertices.size() * sizeof(scene::Vertex), p.vertices.data(), name + " vertices");
-        gpu.indexed = !p.indices.empty();
-        gpu.count = uint32_t(gpu.indexed ? p.indices.size() : p.vertices.size());
-        if (gpu.indexed) gpu.indices = gl::Buffer(p.indices.size() * sizeof(uint32_t), p.indices.data(), name + " indices");
-        auto record = [&](int material) { return material >= 0 && material < defaultMaterial ? material : defaultMaterial; };
-        gpu.material = gpu.baseMaterial = record(p.material);
-        for (const scene::VariantMapping& mapping : p.variants) gpu.variants.push_back({mapping.variant, record(mapping.material)});
-        gpu.bounds = p.bounds;
-        gpu.vertexArray = gl::VertexArray(name);
-        gpu.vertexArray.vertexBuffer(0, gpu.vertices, 0, sizeof(scene::Vertex))
+    // Primitives, mesh by mesh. Those with the same vertices and indices as one uploaded before
+    // share its buffers (candidates by counts and bounds, then compared byte for byte).
+    struct Uploaded {
+        const scene::Primitive* source;
+        std::shared_ptr<GpuGeometry> geometry;
+    };
+    std::multimap<std::tuple<size_t, size_t, float, float, float>, Uploaded> uploaded;
+    auto geometryOf = [&](const scene::Primitive& p, const std::string& name, bool shared) {
+        const auto key = std::make_tuple(p.vertices.size(), p.indices.size(), p.bounds.min.x, p.bounds.max.y, p.bounds.max.z);
+        if (shared) {
+            const auto [begin, end] = uploaded.equal_range(key);
+            for (auto it = begin; it != end; ++it) {
+                const scene::Primitive& s = *it->second.source;
+                if (std::memcmp(s.vertices.data(), p.vertices.data(), p.vertices.size() * sizeof(scene::Vertex)) == 0 &&
+                    std::equal(s.indices.begin(), s.indices.end(), p.indices.begin()))
+                    return it->second.geometry;
+            }
+        }
+        auto g = std::make_shared<GpuGeometry>();
+        g->vertices = gl::Buffer(p.vertices.size() * sizeof(scene::Vertex), p.vertices.data(), name + " vertices");
+        if (!p.indices.empty()) g->indices = gl::Buffer(p.indices.size() * sizeof(uint32_t), p.indices.data(), name + " indices");
+        g->vertexArray = gl::VertexArray(name);
+        g->vertexArray.vertexBuffer(0, g->vertices, 0, sizeof(scene::Vertex))
             .attribute(SPECULA_ATTRIB_POSITION, 0, 3, gl::AttributeType::Float, offsetof(scene::Vertex, position))
             .attribute(SPECULA_ATTRIB_NORMAL, 0, 3, gl::AttributeType::Float, offsetof(scene::Vertex, normal))
             .attribute(SPECULA_ATTRIB_TANGENT, 0, 4, gl::AttributeType::Float, offsetof(scene::Vertex, tangent))
             .attribute(SPECULA_ATTRIB_UV0, 0, 2, gl::AttributeType::Float, offsetof(scene::Vertex, uv0))
             .attribute(SPECULA_ATTRIB_UV1, 0, 2, gl::AttributeType::Float, offsetof(scene::Vertex, uv1))
             .attribute(SPECULA_ATTRIB_COLOR, 0, 4, gl::AttributeType::Float, offsetof(scene::Vertex, color));
-        if (gpu.indexed) gpu.vertexArray.indexBuffer(gpu.indices);
+        if (!p.indices.empty()) g->vertexArray.indexBuffer(g->indices);
+        if (shared) uploaded.emplace(key, Uploaded{&p, g});
+        return g;
+    };
+    // `shared`: false for a deformed draw's own copy, whose vertices are rewritten per pose.
+    auto upload = [&](const scene::Primitive& p, const std::string& name, bool shared = true) {
+        GpuPrimitive gpu;
+        gpu.name = name;
+        gpu.geometry = geometryOf(p, name, shared);
+        gpu.indexed = !p.indices.empty();
+        gpu.count = uint32_t(gpu.indexed ? p.indices.size() : p.vertices.size());
+        auto record = [&](int material) { return material >= 0 && material < defaultMaterial ? material : defaultMaterial; };
+        gpu.material = gpu.baseMaterial = record(p.material);
+        for (const scene::VariantMapping& mapping : p.variants) gpu.variants.push_back({mapping.variant, record(mapping.material)});
+        gpu.bounds = p.bounds;
         return gpu;
     };
     std::vector<std::vector<int>> meshPrimitives(scene.meshes.size());
@@ -377,7 +412,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
                 deformed.primitive = int(k);
                 deformed.skinned = node.skin >= 0 && source.influences > 0;
                 mDeformed.push_back(deformed);
-                GpuPrimitive own = upload(source, scene.meshes[size_t(instance.mesh)].name + " (deformed)");
+                GpuPrimitive own = upload(source, scene.meshes[size_t(instance.mesh)].name + " (deformed)", false);
                 own.material = own.baseMaterial = mPrimitives[size_t(primitive)].material;
                 own.variants = mPrimitives[size_t(primitive)].variants;
                 primitive = int(mPrimitives.size());
@@ -458,7 +493,7 @@ size_t GpuScene::setPose(int animation, float seconds)
         const std::vector<float> weights = scene::morphWeights(rig, pose, node, rest.targets.size());
         GpuPrimitive& gpu = mPrimitives[size_t(item.primitive)];
         scene::deformPrimitive(rest, joints, weights, mScratch, gpu.bounds);
-        gpu.vertices.update(0, mScratch.size() * sizeof(scene::Vertex), mScratch.data());
+        gpu.geometry->vertices.update(0, mScratch.size() * sizeof(scene::Vertex), mScratch.data());
         uploaded += mScratch.size() * sizeof(scene::Vertex);
     }
     updateBounds();

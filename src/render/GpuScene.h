@@ -1,6 +1,7 @@
 #pragma once
 // A scene's meshes, textures and materials uploaded to the GPU, and its draw list.
 #include <array>
+#include <memory>
 #include <string>
 #include <optional>
 #include <vector>
@@ -14,14 +15,21 @@
 
 namespace specula::render {
 
-struct GpuPrimitive {
+/// A primitive's vertex and index buffers and their vertex array. Primitives whose vertices and
+/// indices are the same, byte for byte, share one (a scene's repeated shapes, each with its own
+/// material: the LearnOpenGL grid's 49 spheres are one upload); a deformed draw has its own.
+struct GpuGeometry {
     gl::Buffer vertices;
     gl::Buffer indices;
     gl::VertexArray vertexArray;
+};
+
+struct GpuPrimitive {
+    std::shared_ptr<GpuGeometry> geometry;
     uint32_t count = 0;   ///< indices, or vertices when not indexed (level 0)
     bool indexed = false;
-    /// Levels of detail (scene/MeshLod.h) in `indices`, once GpuScene::buildLevelsOfDetail has
-    /// made them: level 0 is the primitive itself; empty: only that one.
+    /// Levels of detail (scene/MeshLod.h) in the geometry's `indices`, once
+    /// GpuScene::buildLevelsOfDetail has made them: level 0 is the primitive itself; empty: only that one.
     std::vector<scene::LodLevel> lods;
     std::string name; ///< the mesh's, for labels
     int material = 0;     ///< index into GpuScene::materials (the default material is last)

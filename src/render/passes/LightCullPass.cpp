@@ -69,9 +69,12 @@ struct LightCullPass::Impl {
     {
         if (wordTexels) retiredTexels = wordTexels.id();
         wordTexels = {};
-        std::vector<uint32_t> initial(wordCount, 0u);
-        initial[SPECULA_CLUSTER_WORD_CAPACITY] = uint32_t(wordCount);
-        words = gl::Buffer(wordCount * sizeof(uint32_t), initial.data(), "light clusters");
+        // Only the header is read before the passes write it; the rest is written by the
+        // culling before anything reads it (no 4 MiB of zeros made and copied at start-up).
+        std::array<uint32_t, SPECULA_CLUSTER_HEADER_WORDS> header{};
+        header[SPECULA_CLUSTER_WORD_CAPACITY] = uint32_t(wordCount);
+        words = gl::Buffer(wordCount * sizeof(uint32_t), nullptr, "light clusters");
+        words.update(0, sizeof(header), header.data());
         wordTexels = gl::Texture(words, gl::Format::R32UI, "light cluster texels");
         capacity = wordCount;
     }
