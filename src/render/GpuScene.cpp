@@ -8,7 +8,6 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <tuple>
 #include <unordered_map>
 
 #include "core/Footprint.h"
@@ -298,14 +297,15 @@ GpuScene::GpuScene(const scene::Scene& scene)
     const int defaultMaterial = int(materials.size() - 1);
 
     // Primitives, mesh by mesh. Those with the same vertices and indices as one uploaded before
-    // share its buffers (candidates by counts and bounds, then compared byte for byte).
+    // share its buffers (candidates by their counts, then compared byte for byte: memcmp stops
+    // at the first difference).
     struct Uploaded {
         const scene::Primitive* source;
         std::shared_ptr<GpuGeometry> geometry;
     };
-    std::multimap<std::tuple<size_t, size_t, float, float, float>, Uploaded> uploaded;
+    std::multimap<std::pair<size_t, size_t>, Uploaded> uploaded;
     auto geometryOf = [&](const scene::Primitive& p, const std::string& name, bool shared) {
-        const auto key = std::make_tuple(p.vertices.size(), p.indices.size(), p.bounds.min.x, p.bounds.max.y, p.bounds.max.z);
+        const std::pair key(p.vertices.size(), p.indices.size());
         if (shared) {
             const auto [begin, end] = uploaded.equal_range(key);
             for (auto it = begin; it != end; ++it) {
