@@ -33,11 +33,12 @@ std::string BakeSettings::key() const
     // a new cache entry rather than reading a stale one. v2: bump when the CPU side of the bake
     // (the spherical harmonics and irradiance sources of EnvironmentMap) or the file layout
     // changes (v2: the irradiance cube; v3: the bright sources' residual cube and prefiltered
-    // levels; v4: with the count of the sources the specular lobe takes).
+    // levels; v4: with the count of the sources the specular lobe takes; v5: the bright sources the
+    // irradiance cube can hold folded into it).
     const uint64_t shaders = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/equirect_to_cube.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/irradiance.comp", {}).text);
-    return fmt::format("v4-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
+    return fmt::format("v5-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
                        kIrradianceSourceWidth, uint32_t(shaders ^ (shaders >> 32)));
 }
 
@@ -308,14 +309,20 @@ struct ImageBasedLighting::Impl {
         prefiltered = gl::Texture(prefilteredDesc);
         prefilterLevels(state, cube, prefiltered, 0, s, lap);
         sh = projectSh9(map);
-        const IrradianceSplit split = splitIrradiance(map);
-        bakeIrradiance(state, split);
-        lap("irradiance");
-        // The specular lobe's bright sources (ibl/bright_sources.glsl): the map less them.
+        IrradianceSplit split = splitIrradiance(map);
+        // The specular lobe's bright sources (ibl/bright_sources.glsl): the first that hold
+        // most of the bright sources' flux, where those are a large share of the map's.
         residualCube = gl::Texture();
         residualPrefiltered = gl::Texture();
-        specularSources = leadingSourceCount(bright);
-        if (bright.empty() || brightFluxShare(split, specularSources) < kSourcesSpecularShare) specularSources = 0;
+        specularSources = leadingSourceCount(split.bright);
+        if (split.bright.empty() || brightFluxShare(split, specularSources) < kSourcesSpecularShare) specularSources = 0;
+        // The diffuse term sums per pixel only the sources the irradiance cube cannot hold.
+        const size_t brightCount = split.bright.size();
+        const size_t exact = foldSmoothSources(split, size_t(specularSources));
+        bakeIrradiance(state, split);
+        lap("irradiance");
+        log::info("the diffuse term sums {} of the {} bright sources per pixel{}", exact, brightCount,
+                  exact < brightCount ? ", the irradiance cube holds the rest" : "");
         if (specularSources > 0) log::info("the specular lobe takes {} of the {} bright sources as lights", specularSources, bright.size());
         if (specularSources > 0 && s.prefilterLevels > kResidualFirstLevel) {
             residualCube = cubeFrom(state, withoutBrightSources(map, split, specularSources), s.cubeSize,

@@ -272,6 +272,64 @@ IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount, int 
     return split;
 }
 
+size_t foldSmoothSources(IrradianceSplit& split, size_t keepAtLeast, int cubeSize, float tolerance)
+{
+    const size_t count = split.bright.size();
+    keepAtLeast = std::min(keepAtLeast, count);
+    if (keepAtLeast == count || cubeSize < 2) return count;
+    // Test places: the middle between four texel centres, where a bilinear filter strays most
+    // from a function with a kink, in every other cell of each face. Each keeps its corners'
+    // and its middle's irradiance from the sources folded so far, and its scale per channel:
+    // max(E(middle), 5 % of the mean irradiance) of the whole map.
+    struct Place {
+        std::array<glm::vec3, 4> cornerDirection;
+        glm::vec3 middleDirection;
+        std::array<glm::vec3, 4> corner{};
+        glm::vec3 middle{0.0f};
+        glm::vec3 scale{0.0f};
+    };
+    std::vector<IrradianceSource> all = split.cube;
+    all.insert(all.end(), split.bright.begin(), split.bright.end());
+    glm::dvec3 flux(0.0);
+    for (const IrradianceSource& s : all) flux += glm::dvec3(s.flux);
+    const glm::vec3 floor = glm::vec3(0.05 * flux / 4.0); // the mean over the sphere of E(n) is flux / 4
+    const float size = float(cubeSize);
+    std::vector<Place> places;
+    for (int face = 0; face < 6; ++face)
+        for (int t = 0; t + 1 < cubeSize; t += 2)
+            for (int s = 0; s + 1 < cubeSize; s += 2) {
+                Place place;
+                for (int c = 0; c < 4; ++c)
+                    place.cornerDirection[size_t(c)] =
+                        cubeDirection(face, {(float(s + (c & 1)) + 0.5f) / size, (float(t + (c >> 1)) + 0.5f) / size});
+                place.middleDirection = cubeDirection(face, {(float(s) + 1.0f) / size, (float(t) + 1.0f) / size});
+                place.scale = glm::max(irradianceAt(all, place.middleDirection), floor);
+                places.push_back(place);
+            }
+    // Fold from the faintest up while every place stays within the tolerance.
+    size_t keep = count;
+    while (keep > keepAtLeast) {
+        const IrradianceSource& source = split.bright[keep - 1];
+        float worst = 0.0f;
+        for (Place& place : places) {
+            glm::vec3 filtered(0.0f);
+            for (size_t c = 0; c < 4; ++c) {
+                place.corner[c] += source.flux * std::max(glm::dot(place.cornerDirection[c], source.direction), 0.0f);
+                filtered += 0.25f * place.corner[c];
+            }
+            place.middle += source.flux * std::max(glm::dot(place.middleDirection, source.direction), 0.0f);
+            const glm::vec3 error = glm::abs(filtered - place.middle) / place.scale;
+            worst = std::max({worst, error.x, error.y, error.z});
+        }
+        if (worst > tolerance) break;
+        --keep;
+    }
+    for (size_t k = keep; k < count; ++k) split.cube.push_back(split.bright[k]);
+    split.bright.resize(keep);
+    split.brightBlocks.resize(std::min(split.brightBlocks.size(), keep));
+    return keep;
+}
+
 EnvironmentMap withoutBrightSources(const EnvironmentMap& map, const IrradianceSplit& split, int count)
 {
     EnvironmentMap rest = map;

@@ -95,6 +95,17 @@ struct IrradianceSplit {
 IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount = kIrradianceBrightSources,
                                 int brightWidth = kIrradianceSourceWidth, int cubeWidth = kIrradianceCubeSourceWidth);
 
+/// Folds the bright sources that the irradiance cube can hold into it: keeps the first k
+/// (k ≥ keepAtLeast) exact and moves the rest into `split.cube`, k the smallest for which the
+/// cube's bilinear filter, between the centres of four of its `cubeSize`² texels, reads the
+/// folded sources' irradiance within `tolerance` of E(n) (or of 5 % of the mean irradiance,
+/// where E is less). A map whose few bright texels are a small share of its light (an
+/// interior, an overcast sky) then needs no per-pixel sum; a sun or a softbox, whose kink at
+/// the terminator a bilinear filter rounds, stays exact. Returns k.
+constexpr float kIrradianceFoldTolerance = 0.0025f;
+size_t foldSmoothSources(IrradianceSplit& split, size_t keepAtLeast = 0, int cubeSize = kIrradianceSize,
+                         float tolerance = kIrradianceFoldTolerance);
+
 /// `map` less what `split`'s bright sources stand for (their texels black): the environment the
 /// specular lobe reads from the cube where shading adds the bright sources as lights
 /// (ibl/bright_sources.glsl), so that no energy is lost or counted twice.
