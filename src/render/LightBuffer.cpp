@@ -72,8 +72,9 @@ void LightBuffer::setAll(const std::vector<PlacedLight>& lights)
         throw Error("{} lights: a shader's storage block holds at most {} here (GL_MAX_SHADER_STORAGE_BLOCK_SIZE)", lights.size(), mMaxCount);
     mLights = lights;
     mShadowSlots.assign(mLights.size(), -1);
-    mDirectional = int(std::count_if(mLights.begin(), mLights.end(),
-                                     [](const PlacedLight& l) { return l.light.type == scene::Light::Type::Directional; }));
+    mKinds = {};
+    for (const PlacedLight& l : mLights) ++mKinds[size_t(l.light.type)];
+    ++mRevision;
     size_t capacity = size_t(mCapacity);
     while (capacity < mLights.size()) capacity *= 2;
     capacity = std::min(capacity, std::max(size_t(mMaxCount), size_t(mCapacity))); // doubling never passes the limit
@@ -98,15 +99,17 @@ void LightBuffer::setCutoff(float cutoff)
 {
     if (cutoff == mCutoff) return;
     mCutoff = cutoff;
+    ++mRevision;
     uploadAll();
 }
 
 void LightBuffer::set(int index, const PlacedLight& light)
 {
     assert(index >= 0 && index < count());
-    const auto directional = [](const PlacedLight& l) { return l.light.type == scene::Light::Type::Directional ? 1 : 0; };
-    mDirectional += directional(light) - directional(mLights[size_t(index)]);
+    --mKinds[size_t(mLights[size_t(index)].light.type)];
+    ++mKinds[size_t(light.light.type)];
     mLights[size_t(index)] = light;
+    ++mRevision;
     const shared::GpuLight gpu = pack(light, mShadowSlots[size_t(index)], mCutoff);
     mBuffer.update(offsetOf(index), sizeof gpu, &gpu);
 }

@@ -8,6 +8,8 @@
 // editing one light rewrites only that light's 64 bytes. Besides memory, the bounds are how
 // much a storage block and a buffer texture can reach (GL_MAX_SHADER_STORAGE_BLOCK_SIZE,
 // GL_MAX_TEXTURE_BUFFER_SIZE: two million lights on llvmpipe).
+#include <array>
+#include <cstdint>
 #include <vector>
 
 #include "gl/Buffer.h"
@@ -34,7 +36,12 @@ public:
 
     int count() const { return int(mLights.size()); }
     /// How many of them are directional (every light cluster lists them: FrameData.clusterLists).
-    int directionalCount() const { return mDirectional; }
+    int directionalCount() const { return mKinds[size_t(scene::Light::Type::Directional)]; }
+    /// How many are of `type` (the forward programs compile in only the kinds a frame has).
+    int countOf(scene::Light::Type type) const { return mKinds[size_t(type)]; }
+    /// Goes up whenever a light, the count or the cutoff changes (not a shadow slot): what
+    /// the light culling depends on, so that it need not run again while this and the view stay.
+    uint64_t revision() const { return mRevision; }
     /// How many lights the current buffer holds before it must be replaced.
     int capacity() const { return mCapacity; }
     /// The most lights the GL lets a shader reach, in a storage block and in a buffer texture.
@@ -74,7 +81,8 @@ private:
     int mCapacity = 0;
     int mMaxCount = 0;
     float mCutoff = kDefaultCutoff;
-    int mDirectional = 0;
+    std::array<int, 3> mKinds{}; ///< lights of each scene::Light::Type
+    uint64_t mRevision = 0;
     std::vector<PlacedLight> mLights;
     std::vector<int> mShadowSlots;
 };

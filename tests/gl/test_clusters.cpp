@@ -225,6 +225,12 @@ struct CullRun {
     void run(const std::vector<render::PlacedLight>& lights, const render::View& view, int width, int height)
     {
         stores.lights.setAll(lights);
+        cull(view, width, height);
+    }
+
+    /// The pass on the lights already set.
+    void cull(const render::View& view, int width, int height)
+    {
         render::FrameSettings settings = frameSettings(width, height);
         render::FrameStats stats;
         const render::FrameContext frame{view, settings, width, height, 1, 1.0f, stores, backend, stats};
@@ -312,6 +318,56 @@ TEST_F(GlTest, ClusterListsMatchTheCpuTwin)
         EXPECT_LT(entries, size_t(grid.count()) * expected.visible / 4);
         EXPECT_GT(entries, 0u);
     }
+}
+
+// The lists are made again only when a light, the view or the grid changes: a still frame
+// keeps them, and after each change they are those a first culling makes.
+TEST_F(GlTest, ClusterListsAreKeptWhileNothingChanges)
+{
+    const int width = 160, height = 90;
+    std::vector<render::PlacedLight> lights = randomLights(11, 300);
+    const render::View view = testView(float(width) / float(height));
+    // The words the lists use (header, records, indices): the buffer's tail is never written.
+    const auto used = [](std::vector<uint32_t> words) {
+        words.resize(size_t(words[SPECULA_CLUSTER_WORD_BASE]) + words[SPECULA_CLUSTER_WORD_DIRECTIONAL] +
+                     words[SPECULA_CLUSTER_WORD_ENTRIES]);
+        return words;
+    };
+    const auto fresh = [&](const std::vector<render::PlacedLight>& l, const render::View& v) {
+        CullRun once;
+        once.run(l, v, width, height);
+        return used(once.pass.readWords());
+    };
+    CullRun run;
+    run.run(lights, view, width, height);
+    EXPECT_EQ(run.pass.runs(), 1);
+    run.cull(view, width, height);
+    run.cull(view, width, height);
+    EXPECT_EQ(run.pass.runs(), 1) << "a still frame culls again";
+    EXPECT_EQ(used(run.pass.readWords()), fresh(lights, view));
+
+    // One light moved far across the view: the lists change, and are made again.
+    lights[5].position += glm::vec3(3.0f, 0.0f, -2.0f);
+    run.stores.lights.set(5, lights[5]);
+    run.cull(view, width, height);
+    EXPECT_EQ(run.pass.runs(), 2);
+    const std::vector<uint32_t> moved = fresh(lights, view);
+    EXPECT_EQ(used(run.pass.readWords()), moved);
+
+    // The camera turned: made again.
+    render::View turned = view;
+    turned.view = glm::rotate(view.view, 0.2f, glm::vec3(0.0f, 1.0f, 0.0f));
+    run.cull(turned, width, height);
+    EXPECT_EQ(run.pass.runs(), 3);
+    EXPECT_EQ(used(run.pass.readWords()), fresh(lights, turned));
+    EXPECT_NE(used(run.pass.readWords()), moved);
+
+    // Another size: a new grid, made again; the cutoff (every light's range): made again.
+    run.cull(turned, width * 2, height);
+    EXPECT_EQ(run.pass.runs(), 4);
+    run.stores.lights.setCutoff(1e-2f);
+    run.cull(turned, width * 2, height);
+    EXPECT_EQ(run.pass.runs(), 5);
 }
 
 // No lights, one light, and 65,536: each frame equals its brute-force frame, and the lists

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -49,6 +50,14 @@ struct LightCullPass::Impl {
     float shrink = 0.0f;
     ClusterCounts last;
     bool haveCounts = false;
+    // What the lists in `words` were made for: the lights' revision and the view.
+    struct Culled {
+        uint64_t lights = 0;
+        glm::mat4 view{0.0f};
+        bool operator==(const Culled&) const = default;
+    };
+    std::optional<Culled> culled;
+    int runs = 0;
 
     void ensurePrograms()
     {
@@ -69,6 +78,7 @@ struct LightCullPass::Impl {
     {
         if (wordTexels) retiredTexels = wordTexels.id();
         wordTexels = {};
+        culled.reset();
         // Only the header is read before the passes write it; the rest is written by the
         // culling before anything reads it (no 4 MiB of zeros made and copied at start-up).
         std::array<uint32_t, SPECULA_CLUSTER_HEADER_WORDS> header{};
@@ -84,6 +94,7 @@ struct LightCullPass::Impl {
     {
         const ClusterGrid g = ClusterGrid::make(width, height, proj);
         if (haveGrid && g == grid && proj == projection) return;
+        culled.reset(); // new boxes: the lists must be made again
         grid = g;
         projection = proj;
         haveGrid = true;
@@ -139,6 +150,10 @@ struct LightCullPass::Impl {
         gl::State& state = frame.state();
         if (retiredTexels) state.forgetTexture(std::exchange(retiredTexels, 0u));
         LightBuffer& lights = frame.stores.lights;
+        // The lists of the last run still hold while neither the lights nor the view (nor the
+        // grid: updateGrid) changed: a still frame culls nothing, and reads nothing back.
+        const Culled now{lights.revision(), frame.view.view};
+        if (culled && *culled == now) return;
         const size_t lightCount = size_t(lights.count());
         if (cullCapacity < std::max<size_t>(lightCount, 1)) {
             cullCapacity = std::max<size_t>({64, lightCount, 2 * cullCapacity});
@@ -161,6 +176,8 @@ struct LightCullPass::Impl {
         state.dispatchCompute(groups(uint32_t(grid.count()), SPECULA_CULL_GROUP), 1);
         last = c;
         haveCounts = true;
+        culled = now;
+        ++runs;
         // The shading passes fetch the lists next: the frame graph places that barrier.
     }
 };
@@ -195,6 +212,11 @@ const ClusterGrid& LightCullPass::grid() const
 const std::vector<shared::ClusterBounds>& LightCullPass::bounds() const
 {
     return mImpl->bounds;
+}
+
+int LightCullPass::runs() const
+{
+    return mImpl->runs;
 }
 
 ClusterCounts LightCullPass::counts() const

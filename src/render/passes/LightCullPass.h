@@ -52,6 +52,9 @@ public:
 
     const ClusterGrid& grid() const;
     const std::vector<shared::ClusterBounds>& bounds() const;
+    /// How many times the lists were made: a frame whose lights and view are those of the last
+    /// lists keeps them (no dispatch, no read-back).
+    int runs() const;
     ClusterCounts counts() const;
     /// Whether the next frame had better shade every light (LIGHTS_ALL) than read the lists:
     /// the last culling listed nearly every one of `pointAndSpotLights` in nearly every cluster

@@ -49,11 +49,9 @@ LightVariant lightVariant(const LightBuffer& buffer, bool everyLight)
 {
     LightVariant v{.all = everyLight, .directional = false, .point = false, .spot = false};
     if (everyLight && buffer.count() <= LightVariant::kMaxConstantCount) v.count = buffer.count();
-    for (const PlacedLight& p : buffer.all()) {
-        v.directional |= p.light.type == scene::Light::Type::Directional;
-        v.point |= p.light.type == scene::Light::Type::Point;
-        v.spot |= p.light.type == scene::Light::Type::Spot;
-    }
+    v.directional = buffer.countOf(scene::Light::Type::Directional) > 0;
+    v.point = buffer.countOf(scene::Light::Type::Point) > 0;
+    v.spot = buffer.countOf(scene::Light::Type::Spot) > 0;
     return v;
 }
 
