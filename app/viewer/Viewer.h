@@ -168,6 +168,7 @@ private:
     LightUpload mLastLightUpload;
     bool mFirstFrame = true;
     render::View mLastView;
+    render::FrameSettings mLastFrameSettings; // the last frame's, for a screenshot to render it again
     glm::vec2 mLastSize{1.0f};
     gl::DebugMonitor* mDebug = nullptr;
     std::filesystem::path mPendingWindowShot;

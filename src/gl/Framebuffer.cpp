@@ -121,4 +121,11 @@ std::vector<uint8_t> readDefaultFramebuffer(int width, int height)
     return pixels;
 }
 
+bool defaultFramebufferIsSrgb()
+{
+    GLint encoding = GL_LINEAR;
+    glGetNamedFramebufferAttachmentParameteriv(0, GL_BACK_LEFT, GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, &encoding);
+    return encoding == GL_SRGB;
+}
+
 } // namespace specula::gl

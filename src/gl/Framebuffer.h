@@ -49,5 +49,8 @@ private:
 /// bottom row first: `width` × `height` pixels from the bottom left. Binds framebuffer 0 for
 /// reading; callers with a binding cache must reset it.
 std::vector<uint8_t> readDefaultFramebuffer(int width, int height);
+/// Whether the default framebuffer's back buffer is sRGB-encoded (GL_FRAMEBUFFER_SRGB then
+/// encodes what is drawn into it). Only with a window: a surfaceless context has none.
+bool defaultFramebufferIsSrgb();
 
 } // namespace specula::gl

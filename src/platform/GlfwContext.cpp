@@ -22,7 +22,10 @@ public:
         glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
         glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, desc.debug ? GLFW_TRUE : GLFW_FALSE);
         glfwWindowHint(GLFW_VISIBLE, desc.visible ? GLFW_TRUE : GLFW_FALSE);
-        glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_FALSE);
+        // An sRGB-capable back buffer: the tone map can draw into it as into the renderer's sRGB
+        // image, GL encoding both alike (FrameSettings::toWindow); copies and the UI draw with
+        // GL_FRAMEBUFFER_SRGB off, so their bytes pass as they are.
+        glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_TRUE);
         mWindow = glfwCreateWindow(desc.width, desc.height, desc.title.c_str(), nullptr, nullptr);
         if (!mWindow) {
             glfwTerminate();

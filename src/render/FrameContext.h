@@ -3,6 +3,8 @@
 // lights, environment, frame constants, default textures) and this frame's view and settings.
 // A pass adds itself to a frame graph with `addTo(graph, frame, inputs...)`, keeping only
 // what persists (programs, kernels, tables) in its own object.
+#include <optional>
+
 #include "gl/State.h"
 #include "gl/Texture.h"
 #include "gl/UniformBuffer.h"
@@ -35,6 +37,9 @@ struct FrameStores {
     /// Changes whenever what casts shadows may have changed (a new scene, an edited material):
     /// shadow maps drawn before it are stale.
     uint64_t casterVersion = 0;
+    /// Whether the default framebuffer encodes sRGB itself (GL_FRAMEBUFFER_SRGB applies to it):
+    /// asked by the first frame drawn straight into a window (FrameSettings::toWindow).
+    std::optional<bool> windowSrgb;
     FrameStores();
     ~FrameStores();
 };

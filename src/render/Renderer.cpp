@@ -352,6 +352,7 @@ ImageRGBA8 Renderer::readImage() const
     const Impl& r = *mImpl;
     ImageRGBA8 image;
     if (!r.last) return image;
+    if (!r.last->outputs.ldr) throw Error("the last frame went straight to the window (toWindow): no image to read");
     const gl::Texture& ldr = r.lastTexture(r.last->outputs.ldr);
     image.width = ldr.width();
     image.height = ldr.height();
@@ -363,13 +364,19 @@ void Renderer::present(int width, int height)
 {
     Impl& r = *mImpl;
     if (!r.last) return;
-    gl::Texture& ldr = r.lastTexture(r.last->outputs.ldr);
-    // No sRGB encoding and no scissor: the bytes are sRGB already and copied as they are.
-    // The default framebuffer stays bound for what the window draws on top (a UI).
+    // The default framebuffer stays bound for what the window draws on top (a UI), with no
+    // sRGB encoding and no scissor: the bytes are sRGB already and copied as they are.
     r.stores.state.bindFramebuffer(nullptr);
     r.stores.state.viewport(0, 0, width, height);
     r.stores.state.apply({.noDepthTest = true, .noDepthWrite = true});
+    if (!r.last->outputs.ldr) return; // the frame is there already (toWindow)
+    gl::Texture& ldr = r.lastTexture(r.last->outputs.ldr);
     r.backend.framebufferOf({&ldr}).blitColorToDefault(ldr.width(), ldr.height(), width, height);
+}
+
+bool Renderer::lastFrameInWindow() const
+{
+    return mImpl->last && !mImpl->last->outputs.ldr;
 }
 
 float Renderer::exposureScale() const

@@ -139,6 +139,11 @@ struct FrameSettings {
     AutoExposureSettings autoExposure;
     FxaaSettings fxaa;
     DebugView debugView = DebugView::None;
+    /// The tone map draws straight into the default framebuffer (a window's back buffer, of
+    /// width × height) when it is the frame's last pass (no FXAA, no debug view) and the back
+    /// buffer is sRGB-capable: the copy present() makes is saved, the bytes are the same.
+    /// readImage() has no image of such a frame (lastFrameInWindow()).
+    bool toWindow = false;
 };
 
 /// GPU milliseconds per pass of the last frame (timer queries), when timing is on. Passes
@@ -239,11 +244,14 @@ public:
     void render(const View& view, const FrameSettings& settings);
 
     /// The last frame, tone-mapped and sRGB-encoded, top row first (with a debug view: that
-    /// buffer).
+    /// buffer). Throws specula::Error after a frame that went to the window (toWindow).
     ImageRGBA8 readImage() const;
     /// Copies the last frame (what readImage() returns) into the default framebuffer's
-    /// rectangle (0, 0, width, height), scaled, for windows.
+    /// rectangle (0, 0, width, height), scaled, for windows; after a frame that went there
+    /// itself (toWindow), only binds the default framebuffer for what the window draws on top.
     void present(int width, int height);
+    /// Whether the last frame was drawn straight into the default framebuffer (toWindow).
+    bool lastFrameInWindow() const;
     /// The last frame's linear radiance × exposureScale() (before tone mapping, after bloom),
     /// top row first. With the SSAO debug view: the occlusion in r, g and b.
     ImageFloat readRadiance() const;

@@ -49,14 +49,15 @@ void TonemapPass::addTo(FrameGraph& graph, const FrameContext& frame, GraphTextu
         [&](FrameGraph::Builder& b) {
             b.read(input, Use::Sample);
             if (exposure) b.read(exposure, Use::StorageRead);
-            b.write(target, Use::ColorAttachment);
+            if (target) b.write(target, Use::ColorAttachment);
+            else b.sideEffect(); // the window
         },
         [&frame, &tonemap, input, exposure, target, encodeSrgb] {
             gl::State& state = frame.state();
             frame.stores.frame.bind(SPECULA_BINDING_FRAME);
             if (exposure) gl::bindStorageBuffer(SPECULA_BINDING_EXPOSURE, frame.backend.buffer(exposure));
-            // Into FXAA's UNORM input the shader encodes; into the sRGB target GL does.
-            drawFullscreen(state, {.target = &frame.backend.framebuffer({target}),
+            // Into FXAA's UNORM input the shader encodes; into the sRGB target (or window) GL does.
+            drawFullscreen(state, {.target = target ? &frame.backend.framebuffer({target}) : nullptr,
                                    .width = frame.width,
                                    .height = frame.height,
                                    .pipeline = {.noDepthTest = true, .noDepthWrite = true, .framebufferSrgb = !encodeSrgb},

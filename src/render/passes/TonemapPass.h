@@ -20,7 +20,8 @@ uint32_t tonemapId(Tonemap t);
 class TonemapPass {
 public:
     /// Adds the pass: `input` (RGBA16F, `samples` per pixel) into `target` (sRGB, or with
-    /// `encodeSrgb` an RGBA8 UNORM texture the shader encodes into).
+    /// `encodeSrgb` an RGBA8 UNORM texture the shader encodes into; an invalid `target`: the
+    /// default framebuffer, sRGB-capable).
     void addTo(FrameGraph& graph, const FrameContext& frame, GraphTexture input, int samples, GraphBuffer exposure,
                GraphTexture target, bool encodeSrgb);
 

@@ -1,5 +1,7 @@
 #include "render/pipelines/FramePipelines.h"
 
+#include "core/Log.h"
+#include "gl/Framebuffer.h"
 #include "render/FrameContext.h"
 #include "render/GpuScene.h"
 #include "render/passes/ResolvePass.h"
@@ -39,7 +41,7 @@ void finish(Frame& f, FramePasses& passes, const FrameContext& frame)
     if (frame.settings.debugView == DebugView::LightCount) passes.debugView().addLightCountLegend(f.graph, frame, out.ldr);
     if (frame.settings.debugView == DebugView::ShadowAtlas && out.shadows)
         passes.debugView().addShadowAtlas(f.graph, frame, out.shadows, out.ldr);
-    f.graph.exportTexture(out.ldr);
+    if (out.ldr) f.graph.exportTexture(out.ldr);
     if (out.hdr) f.graph.exportTexture(out.hdr);
     if (out.msaaColor) f.graph.exportTexture(out.msaaColor);
 }
@@ -90,7 +92,17 @@ void buildForward(Frame& f, FramePasses& passes, const FrameContext& frame)
     GraphBuffer exposure;
     if (s.autoExposure.enabled) exposure = passes.exposure().addTo(graph, frame.backend, out.hdr, s.autoExposure);
 
-    out.ldr = graph.createTexture("ldr colour", target(frame, gl::Format::SRGB8_ALPHA8));
+    // Straight into the window when the tone map is the last pass and the window's back
+    // buffer is sRGB-capable: GL encodes there as into the 8-bit image, so the bytes are the
+    // same, and there is no image to copy. Else the image, which present() copies.
+    bool toWindow = s.toWindow && !s.fxaa.enabled && s.debugView == DebugView::None;
+    if (toWindow && !frame.stores.windowSrgb) {
+        frame.stores.windowSrgb = gl::defaultFramebufferIsSrgb();
+        log::debug("{}", *frame.stores.windowSrgb ? "the tone map draws straight into the window's sRGB back buffer"
+                                                   : "the window's back buffer is not sRGB: frames are copied into it");
+    }
+    toWindow = toWindow && *frame.stores.windowSrgb;
+    if (!toWindow) out.ldr = graph.createTexture("ldr colour", target(frame, gl::Format::SRGB8_ALPHA8));
     const GraphTexture toneMapped = s.fxaa.enabled ? graph.createTexture("fxaa input", target(frame, gl::Format::RGBA8)) : out.ldr;
     passes.tonemap.addTo(graph, frame, out.hdr ? out.hdr : color, out.hdr ? 1 : frame.samples, exposure, toneMapped,
                          s.fxaa.enabled);
