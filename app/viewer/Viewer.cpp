@@ -211,6 +211,7 @@ void Viewer::renderFrame(float deltaSeconds)
 void Viewer::screenshot(const std::filesystem::path& path)
 {
     if (mRenderer->lastFrameInWindow()) {
+        // The same frame into the 8-bit image (with automatic exposure, one adaptation step on).
         render::FrameSettings again = mLastFrameSettings;
         again.toWindow = false;
         mRenderer->render(mLastView, again);

@@ -95,11 +95,11 @@ struct IrradianceSplit {
 IrradianceSplit splitIrradiance(const EnvironmentMap& map, int brightCount = kIrradianceBrightSources,
                                 int brightWidth = kIrradianceSourceWidth, int cubeWidth = kIrradianceCubeSourceWidth);
 
-/// Folds the bright sources that the irradiance cube can hold into it: keeps the first k
-/// (k ≥ keepAtLeast) exact and moves the rest into `split.cube`, k the smallest for which the
-/// cube's bilinear filter, between the centres of four of its `cubeSize`² texels, reads the
-/// folded sources' irradiance within `tolerance` of E(n) (or of 5 % of the mean irradiance,
-/// where E is less). A map whose few bright texels are a small share of its light (an
+/// Folds the bright sources that the irradiance cube can hold into it: moves them into
+/// `split.cube` one at a time from the faintest up (never the first keepAtLeast) for as long as
+/// the cube's bilinear filter, in the middle of four of its `cubeSize`² texel centres (every
+/// other cell of each face), reads the folded sources' irradiance within `tolerance` of E(n)
+/// per channel (or of 5 % of the mean irradiance, where E is less); the first k stay exact. A map whose few bright texels are a small share of its light (an
 /// interior, an overcast sky) then needs no per-pixel sum; a sun or a softbox, whose kink at
 /// the terminator a bilinear filter rounds, stays exact. Returns k.
 constexpr float kIrradianceFoldTolerance = 0.0025f;
