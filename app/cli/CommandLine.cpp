@@ -70,8 +70,8 @@ void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
     command->add_option("--env-sun", frame.envSun,
                         "extract: take the map's sun out as a directional light of the same illuminance, colour and size (it then casts shadows); keep (default)");
     command->add_option("--ibl", frame.ibl,
-                        "specular image-based light: split-sum (the default: one fetch) or importance (64 filtered samples per pixel with "
-                        "the full BRDF, view-dependent; about 3.7x the forward pass on llvmpipe: docs/ibl.md)");
+                        "specular image-based light: split-sum (the default: one fetch) or importance (64-256 filtered samples per pixel, by "
+                        "roughness, with the full BRDF, view-dependent; on llvmpipe about 20x the split sum's forward pass: docs/ibl.md)");
     command->add_option("--bake-preset", frame.bakePreset, "default, or reference (the LearnOpenGL tutorial's bake sizes)");
     command->add_option("--energy-compensation", frame.energyCompensation,
                         "multiple-scattering compensation of the specular lobe: on (default) or off (exactly the glTF BRDF)");

@@ -10,13 +10,15 @@
 #include "../brdf/thin_film.glsl"
 #include "bright_sources.glsl"
 
-// Chosen by measurement against the Monte Carlo reference (docs/ibl.md, copper under
-// venice_1k, roughness 1): 32 samples 8.7 % mean error, 64 4.9 %, 128 3.1 %, 256 2.7 % (that
-// reference's own noise was about 3 % there; against the noise-free quadrature that replaced
-// it, 64 samples are 4.3 %); each doubling costs about 1.4× the forward pass.
-#ifndef IBL_IMPORTANCE_SAMPLES
-#define IBL_IMPORTANCE_SAMPLES 64
-#endif
+// Samples per pixel by roughness, chosen by measurement against the noise-free reference
+// (docs/ibl.md, GlTest.ImageBasedLightMatchesAMonteCarloReference, copper under studio, sunset
+// and venice_1k): with 64 samples everywhere 2.7-3.4 % at roughness 0.5, 3.7-4.7 % at 0.75 and
+// 4.3-6.0 % at 1; with 64 / 128 / 256 as below every roughness is within 2.2 %. A wide lobe
+// needs more samples because each reads a coarser box mip, which blurs what it reads.
+uint importanceSampleCount(float perceptualRoughness)
+{
+    return perceptualRoughness < 0.375 ? 64u : perceptualRoughness < 0.625 ? 128u : 256u;
+}
 // Křivánek & Colbert add one level; measured, that doubles the error (the wider box leaks bright
 // sources across the horizon), so none.
 const float kIblLodBias = 0.0;
@@ -48,9 +50,10 @@ vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float percep
 #if defined(IBL_SOURCE_SPECULAR) && IBL_SOURCE_COUNT > 0
     float sourceWeight = brightSourceWeight(perceptualRoughness);
 #endif
+    uint samples = importanceSampleCount(perceptualRoughness);
     vec3 sum = vec3(0.0);
-    for (uint i = 0u; i < uint(IBL_IMPORTANCE_SAMPLES); ++i) {
-        vec2 xi = hammersley(i, uint(IBL_IMPORTANCE_SAMPLES));
+    for (uint i = 0u; i < samples; ++i) {
+        vec2 xi = hammersley(i, samples);
         vec3 h = basis * importanceSampleGgx(xi, alpha);
         float VoH = dot(v, h);
         vec3 l = 2.0 * VoH * h - v;
@@ -59,7 +62,7 @@ vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float percep
         float NoH = saturate(dot(n, h));
         // pdf(l) = D_GGX(h) (n·h) / (4 v·h) (Walter et al. 2007, eq. 14 and 38).
         float pdf = D_GGX(NoH, alpha) * NoH / (4.0 * VoH);
-        float lod = max(0.5 * log2(1.0 / (float(IBL_IMPORTANCE_SAMPLES) * pdf * texelSolidAngle)) + kIblLodBias, 0.0);
+        float lod = max(0.5 * log2(1.0 / (float(samples) * pdf * texelSolidAngle)) + kIblLodBias, 0.0);
         vec3 le = toEnvironment(l);
 #if defined(IBL_SOURCE_SPECULAR) && IBL_SOURCE_COUNT > 0
         // The map less its bright sources, which are added below as lights (ibl/bright_sources.glsl).
@@ -82,7 +85,7 @@ vec3 importanceSampledSpecular(SurfaceBrdf surface, vec3 n, vec3 v, float percep
 #endif
         sum += F * weight * radiance;
     }
-    sum /= float(IBL_IMPORTANCE_SAMPLES);
+    sum /= float(samples);
 #if defined(IBL_SOURCE_SPECULAR) && IBL_SOURCE_COUNT > 0
     if (sourceWeight > 0.0) sum += sourceWeight * brightSourcesSpecular(s, n, v, film);
 #endif
@@ -117,10 +120,12 @@ vec3 importanceSampledSpecularAnisotropic(SurfaceBrdf surface, ThinFilm film, ve
     float faceSize = float(textureSize(uEnvironmentCube, 0).x);
     float texelSolidAngle = 4.0 * PI / (6.0 * faceSize * faceSize);
     mat3 basis = mat3(t, b, n);
+    // As many samples as the isotropic lobe of the wider roughness takes.
+    uint samples = importanceSampleCount(sqrt(max(alphas.x, alphas.y)));
     vec3 sum = vec3(0.0);
     vec2 terms = vec2(0.0);
-    for (uint i = 0u; i < uint(IBL_IMPORTANCE_SAMPLES); ++i) {
-        vec2 xi = hammersley(i, uint(IBL_IMPORTANCE_SAMPLES));
+    for (uint i = 0u; i < samples; ++i) {
+        vec2 xi = hammersley(i, samples);
         vec3 hl = importanceSampleGgxAnisotropic(xi, alphas.x, alphas.y);
         vec3 h = basis * hl;
         float VoH = dot(v, h);
@@ -130,7 +135,7 @@ vec3 importanceSampledSpecularAnisotropic(SurfaceBrdf surface, ThinFilm film, ve
         float NoH = hl.z;
         // pdf(l) = D(h) (n.h) / (4 v.h), as the isotropic sampler's.
         float pdf = D_GGX_Anisotropic(NoH, hl.x, hl.y, alphas.x, alphas.y) * NoH / (4.0 * VoH);
-        float lod = max(0.5 * log2(1.0 / (float(IBL_IMPORTANCE_SAMPLES) * pdf * texelSolidAngle)) + kIblLodBias, 0.0);
+        float lod = max(0.5 * log2(1.0 / (float(samples) * pdf * texelSolidAngle)) + kIblLodBias, 0.0);
         vec3 radiance = textureLod(uEnvironmentCube, toEnvironment(l), lod).rgb;
         // f_s (n.l) / pdf = F V (n.l) 4 (v.h) / (n.h).
         float weight = V_SmithGGXCorrelatedAnisotropic(NoV, NoL, dot(t, v), dot(b, v), dot(t, l), dot(b, l), alphas.x, alphas.y) *
@@ -143,8 +148,8 @@ vec3 importanceSampledSpecularAnisotropic(SurfaceBrdf surface, ThinFilm film, ve
         float fc = brdfFresnelWeight(VoH);
         terms += weight * vec2(1.0 - fc, fc);
     }
-    dfg = terms / float(IBL_IMPORTANCE_SAMPLES);
-    return sum / float(IBL_IMPORTANCE_SAMPLES);
+    dfg = terms / float(samples);
+    return sum / float(samples);
 }
 #endif
 

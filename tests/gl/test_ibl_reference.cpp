@@ -170,15 +170,18 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
                     // Bounds, from the measurements in docs/ibl.md (a noise-free reference: the
                     // measured errors plus a margin for other drivers' rounding). The issue's
                     // targets (importance 3 %, split sum 6 %, mirror 2 %) are met by the mirror
-                    // and, in importance, up to roughness 0.5 on the sky-lit maps; see docs/ibl.md
-                    // for what is left. Without the bright sources as the specular lobe's lights
-                    // the studio's copper is 12-48 % off in importance and 18-27 % in the split
-                    // sum, and fails these.
+                    // and by the metal in importance at every roughness (0.7-2.2 % measured, so its
+                    // bound is the target: with 64 samples at every roughness it is 3.4-6.0 % from
+                    // 0.5 on and fails); see docs/ibl.md for what is left. Without the bright
+                    // sources as the specular lobe's lights the studio's copper is 12-48 % off in
+                    // importance and 18-27 % in the split sum, and fails these.
                     const bool importance = mode == render::IblSpecular::Importance;
                     // The smooth dielectric's diffuse coupling (docs/ibl.md): 1 - E(n.v), not the
                     // glTF BRDF's per-direction 1 - F(v.h), which reflects more than it receives
                     // near grazing: 3.7-7.8 % in both modes.
-                    const double bound = roughness == 0.0f ? (metal ? 0.02 : 0.09) : importance ? 0.07 : 0.16;
+                    const double bound = roughness == 0.0f ? (metal ? 0.02 : 0.09)
+                                         : importance     ? (metal ? 0.03 : 0.07)
+                                                          : 0.16;
                     row += fmt::format(" {:.2f} % |", 100.0 * error.relative());
                     results.push_back({std::string(mapName) + (metal ? " copper" : " dielectric") + " roughness " +
                                            fmt::format("{}", roughness) + " " + render::iblSpecularName(mode),
