@@ -2,6 +2,7 @@
 // of the environment, ibl/irradiance.comp) for the diffuse lobe, the prefiltered radiance and
 // DFG table (split sum, Karis 2013) for the specular lobe.
 #include "../shared/EnvironmentData.h"
+#include "source_cosine.glsl"
 
 layout(std140, binding = SPECULA_BINDING_ENVIRONMENT) uniform EnvironmentBlock { EnvironmentData environment; };
 layout(binding = SPECULA_UNIT_PREFILTERED) uniform samplerCube uPrefiltered;
@@ -18,8 +19,9 @@ vec3 toEnvironment(vec3 worldDirection)
 #if defined(IBL_SOURCE_COUNT)
 // Irradiance E(n), lux, at environment-space normal n: the cube (the environment less its
 // brightest parts) plus those parts summed here, exactly — a cube's bilinear filter would round
-// the kink of max(0, n·d) at a bright source's terminator. The parts are constants of the
-// program (IBL_SOURCE_COUNT, IBL_SOURCE_DIRECTIONS and IBL_SOURCE_FLUXES, written by
+// the kink of max(0, n·d) at a bright source's terminator (which each part's spread rounds as
+// its light does: source_cosine.glsl). The parts are constants of the
+// program (IBL_SOURCE_COUNT, IBL_SOURCE_DIRECTIONS, IBL_SOURCE_FLUXES and IBL_SOURCE_SPREADS, written by
 // render/passes/ForwardPass for the environment on screen, which recompiles when it changes):
 // folded into the code they cost half of what reading them from a uniform block does on
 // llvmpipe, whose gallivm loads every block member per lane (docs/performance.md).
@@ -29,7 +31,8 @@ vec3 irradianceCube(vec3 n)
 #if IBL_SOURCE_COUNT > 0
     const vec3 directions[IBL_SOURCE_COUNT] = vec3[](IBL_SOURCE_DIRECTIONS); // environment space
     const vec3 fluxes[IBL_SOURCE_COUNT] = vec3[](IBL_SOURCE_FLUXES);         // lux at normal incidence
-    for (int i = 0; i < IBL_SOURCE_COUNT; ++i) e += fluxes[i] * max(dot(n, directions[i]), 0.0);
+    const float spreads[IBL_SOURCE_COUNT] = float[](IBL_SOURCE_SPREADS);     // radians
+    for (int i = 0; i < IBL_SOURCE_COUNT; ++i) e += fluxes[i] * sourceCosine(dot(n, directions[i]), spreads[i]);
 #endif
     return e;
 }

@@ -3,15 +3,17 @@
 // cosine convolution of the environment summed over its sources — the equirectangular map
 // reduced on the CPU to blocks of texels, each its flux (Σ L dω, kept in 32-bit float so that
 // a sun beyond half-float range keeps its energy) seen from the centroid of its radiance
-// (shading/EnvironmentMap: irradianceSources, and irradianceCube, this shader's CPU twin).
+// with its spread across the horizon (shading/EnvironmentMap: irradianceSources, and
+// irradianceCube, this shader's CPU twin).
 #include "../common/math.glsl"
 #include "cube.glsl"
+#include "source_cosine.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, rgba16f) uniform writeonly imageCube uTarget;
 
 struct Source {
-    vec4 direction; // xyz
+    vec4 direction; // xyz; w: the spread (source_cosine.glsl)
     vec4 flux;      // rgb, lux at normal incidence
 };
 layout(std430, binding = 0) readonly buffer Sources { Source sources[]; };
@@ -24,6 +26,6 @@ void main()
     vec3 n = cubeDirection(uint(id.z), (vec2(id.xy) + 0.5) / float(size));
     vec3 e = vec3(0.0);
     int count = sources.length();
-    for (int i = 0; i < count; ++i) e += sources[i].flux.rgb * max(dot(n, sources[i].direction.xyz), 0.0);
+    for (int i = 0; i < count; ++i) e += sources[i].flux.rgb * sourceCosine(dot(n, sources[i].direction.xyz), sources[i].direction.w);
     imageStore(uTarget, id, vec4(e, 1.0));
 }

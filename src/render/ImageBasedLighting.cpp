@@ -34,11 +34,11 @@ std::string BakeSettings::key() const
     // (the spherical harmonics and irradiance sources of EnvironmentMap) or the file layout
     // changes (v2: the irradiance cube; v3: the bright sources' residual cube and prefiltered
     // levels; v4: with the count of the sources the specular lobe takes; v5: the bright sources the
-    // irradiance cube can hold folded into it).
+    // irradiance cube can hold folded into it; v6: each source's spread).
     const uint64_t shaders = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/equirect_to_cube.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/irradiance.comp", {}).text);
-    return fmt::format("v5-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
+    return fmt::format("v6-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
                        kIrradianceSourceWidth, uint32_t(shaders ^ (shaders >> 32)));
 }
 
@@ -362,7 +362,7 @@ struct ImageBasedLighting::Impl {
         std::vector<glm::vec4> packed;
         packed.reserve(sources.size() * 2);
         for (const IrradianceSource& s : sources) {
-            packed.emplace_back(s.direction, 0.0f);
+            packed.emplace_back(s.direction, s.spread);
             packed.emplace_back(s.flux, 0.0f);
         }
         const gl::Buffer buffer(packed.size() * sizeof(glm::vec4), packed.data(), "irradiance sources");

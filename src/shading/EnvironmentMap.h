@@ -75,10 +75,20 @@ glm::vec3 cubeDirection(int face, const glm::vec2& st);
 struct IrradianceSource {
     glm::vec3 direction;
     glm::vec3 flux;
+    /// How far its light spreads about `direction`: the half-width s (radians) of a band of
+    /// uniform light with the same second moment of angle, s² = 1.5 ⟨θ²⟩ (a block of uniform
+    /// texels: half its width; a sun: 0.87 × its angular radius). 0: a point (the cube's
+    /// sources of splitIrradiance).
+    float spread = 0.0f;
 };
+/// What a surface of normal n receives from a source of spread s, per unit of its flux, as a
+/// function of c = n·direction: c where the whole band is above the horizon (c ≥ s), nothing
+/// where it is all below (c ≤ −s), and (c + s)² / 4s in between — the cosine integrated over the
+/// band, which rounds the kink a point has at the terminator (shaders/ibl/source_cosine.glsl).
+float sourceCosine(float cosine, float spread);
 std::vector<IrradianceSource> irradianceSources(const EnvironmentMap& map, int sourceWidth = kIrradianceSourceWidth);
 
-/// E(n) = Σ flux · max(0, n·direction) over `sources`.
+/// E(n) = Σ flux · sourceCosine(n·direction, spread) over `sources`.
 glm::vec3 irradianceAt(const std::vector<IrradianceSource>& sources, const glm::vec3& n);
 
 /// The diffuse term's two parts: the `brightCount` sources of most flux (luminance) of the map

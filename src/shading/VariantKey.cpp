@@ -252,6 +252,9 @@ std::vector<std::string> irradianceSourceDefines(std::span<const IrradianceSourc
     if (!sources.empty()) {
         defines.push_back("IBL_SOURCE_DIRECTIONS " + list(&IrradianceSource::direction));
         defines.push_back("IBL_SOURCE_FLUXES " + list(&IrradianceSource::flux));
+        std::string spreads;
+        for (const IrradianceSource& source : sources) spreads += fmt::format("{}{:.9g}", spreads.empty() ? "" : ", ", source.spread);
+        defines.push_back("IBL_SOURCE_SPREADS " + spreads);
     }
     return defines;
 }

@@ -59,7 +59,8 @@ std::span<const VariantDefine> forwardVariantTable();
 
 struct IrradianceSource; // shading/EnvironmentMap.h
 
-/// The forward programs' IBL_SOURCE_COUNT, IBL_SOURCE_DIRECTIONS and IBL_SOURCE_FLUXES: an
+/// The forward programs' IBL_SOURCE_COUNT, IBL_SOURCE_DIRECTIONS, IBL_SOURCE_FLUXES and
+/// IBL_SOURCE_SPREADS: an
 /// environment's bright sources as constants of the code (ibl/ibl.glsl), each float exactly.
 std::vector<std::string> irradianceSourceDefines(std::span<const IrradianceSource> sources);
 
