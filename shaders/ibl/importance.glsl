@@ -12,7 +12,7 @@
 
 // Samples per pixel by roughness, chosen by measurement against the noise-free reference
 // (docs/ibl.md, GlTest.ImageBasedLightMatchesAMonteCarloReference, copper under studio, sunset
-// and venice_1k): with 64 samples everywhere 2.7-3.4 % at roughness 0.5, 3.7-4.7 % at 0.75 and
+// and venice_1k): with 64 samples everywhere 2.6-3.4 % at roughness 0.5, 3.7-4.7 % at 0.75 and
 // 4.3-6.0 % at 1; with 64 / 128 / 256 as below every roughness is within 2.2 %. A wide lobe
 // needs more samples because each reads a coarser box mip, which blurs what it reads.
 uint importanceSampleCount(float perceptualRoughness)
