@@ -127,6 +127,7 @@ int runView(const ViewArgs& args)
         viewer.captureWindow();
         context->swapBuffers();
         ++frameCount;
+        viewer.advanceEnvironmentBake();
 
         if (debug.errorCount() > 0) break; // reported below
         if (interactive) continue;

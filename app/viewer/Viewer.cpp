@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "core/Error.h"
@@ -81,7 +82,9 @@ void Viewer::loadScene(const std::string& name)
         mSettings = settings;
         if (environment) {
             Stopwatch bake;
-            mRenderer->setEnvironment(*environment, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions));
+            mBake.pending = mRenderer->setEnvironment(*environment, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions),
+                                                      render::BakeMode::Progressive)
+                                .progressive;
             mStartup.environmentBake = bake.elapsedMs();
             mEnvironmentName = mOptions.env.value_or(document.environment.file.empty() ? "sky" : document.environment.file);
         }
@@ -100,7 +103,9 @@ void Viewer::loadEnvironment(const std::string& file)
 {
     render::EnvironmentMap map = file == "sky" ? render::proceduralSky() : render::loadEnvironmentMap(file);
     Stopwatch bake;
-    mRenderer->setEnvironment(map, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions));
+    mBake.pending =
+        mRenderer->setEnvironment(map, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions), render::BakeMode::Progressive)
+            .progressive;
     log::info("environment {} ready in {:.0f} ms", file, bake.elapsedMs());
     mEnvironment = std::move(map);
     mEnvironmentName = file;
@@ -196,6 +201,7 @@ void Viewer::renderFrame(float deltaSeconds)
         mRenderer->invalidateGlState();
     }
     mRenderer->present(size.x, size.y);
+    mLastRenderMs = frameClock.elapsedMs();
     if (mFirstFrame) {
         mStartup.firstRender = frameClock.elapsedMs();
         mStartup.firstFrame = msSinceProcessStart();
@@ -208,9 +214,22 @@ void Viewer::renderFrame(float deltaSeconds)
     frameTimes.back() = deltaSeconds * 1000.0f;
 }
 
+void Viewer::advanceEnvironmentBake()
+{
+    if (mBake.pending) mBake = mRenderer->advanceEnvironmentBake(std::max(8.0, mLastRenderMs));
+}
+
+bool Viewer::finishEnvironmentBake()
+{
+    if (!mBake.pending) return false;
+    mBake = mRenderer->advanceEnvironmentBake(std::numeric_limits<double>::infinity());
+    return true;
+}
+
 void Viewer::screenshot(const std::filesystem::path& path)
 {
-    if (mRenderer->lastFrameInWindow()) {
+    // The last frame may show the preview of a bake still under way: the full one, drawn again.
+    if (finishEnvironmentBake() || mRenderer->lastFrameInWindow()) {
         // The same frame into the 8-bit image (with automatic exposure, one adaptation step on).
         render::FrameSettings again = mLastFrameSettings;
         again.toWindow = false;
@@ -269,7 +288,10 @@ bool Viewer::reloadShaders()
                 fresh->setMaterialParameter(i, parameter, mRenderer->materialParameter(i, parameter));
             }
         }
-        if (mEnvironment) fresh->setEnvironment(*mEnvironment, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions));
+        if (mEnvironment)
+            mBake.pending = fresh->setEnvironment(*mEnvironment, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions),
+                                                  render::BakeMode::Progressive)
+                                .progressive;
         fresh->prepare(mSettings);
         mRenderer = std::move(fresh);
         lastError.clear();

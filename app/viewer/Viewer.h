@@ -121,6 +121,12 @@ public:
     const std::string& sceneName() const { return mSceneName; }
     const std::string& environmentName() const { return mEnvironmentName; }
     const StartupTimes& startup() const { return mStartup; }
+    /// After a frame is shown: the environment's progressive bake (a preview renders until it
+    /// is done) runs its next steps for as long as the frame took to render, at least 8 ms.
+    void advanceEnvironmentBake();
+    /// The rest of the progressive bake at once (before a screenshot); whether one was pending.
+    bool finishEnvironmentBake();
+    const render::BakeProgress& bakeProgress() const { return mBake; }
     void setContextTime(double ms) { mStartup.context = ms; }
     /// The monitor whose errors a failed shader compile discards: a compile error in an edited
     /// shader is the user's to fix (shown in the UI), not a bug of the viewer.
@@ -167,6 +173,8 @@ private:
     StartupTimes mStartup;
     LightUpload mLastLightUpload;
     bool mFirstFrame = true;
+    double mLastRenderMs = 0.0; ///< the last frame's render and present
+    render::BakeProgress mBake;
     render::View mLastView;
     render::FrameSettings mLastFrameSettings; // the last frame's, for a screenshot to render it again
     glm::vec2 mLastSize{1.0f};

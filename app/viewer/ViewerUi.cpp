@@ -107,6 +107,8 @@ void statisticsPanel(Viewer& viewer)
     ImGui::Text("start-up: context %.0f ms, scene load %.0f ms, upload %.0f ms,", s.context, s.sceneLoad, s.sceneUpload);
     ImGui::Text("  environment bake %.0f ms, first render %.0f ms,", s.environmentBake, s.firstRender);
     ImGui::Text("  first frame at %.0f ms", s.firstFrame);
+    if (viewer.bakeProgress().pending)
+        ImGui::Text("environment: a preview while the full bake runs (%.0f %%)", 100.0 * viewer.bakeProgress().fraction);
 }
 
 void scenePanel(Viewer& viewer)

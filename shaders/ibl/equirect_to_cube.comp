@@ -6,10 +6,13 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D uSource;
 layout(binding = 0, rgba16f) uniform writeonly imageCube uCube;
+// The first texel (x, y) and face (z) of this dispatch: a bake spread over frames writes a band
+// of rows of a face at a time.
+uniform ivec3 uOffset;
 
 void main()
 {
-    ivec3 id = ivec3(gl_GlobalInvocationID);
+    ivec3 id = ivec3(gl_GlobalInvocationID) + uOffset;
     int size = imageSize(uCube).x;
     if (id.x >= size || id.y >= size) return;
     vec3 d = cubeDirection(uint(id.z), (vec2(id.xy) + 0.5) / float(size));

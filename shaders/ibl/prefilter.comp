@@ -23,10 +23,13 @@ uniform float uSourceLevels; // mip count of uSource
 // own texels (the bake).
 uniform int uStride;
 uniform int uLevelSize;
+// The first texel (x, y) and face (z) of this dispatch: a bake spread over frames writes a band
+// of rows of a face at a time.
+uniform ivec3 uOffset;
 
 void main()
 {
-    ivec3 id = ivec3(gl_GlobalInvocationID);
+    ivec3 id = ivec3(gl_GlobalInvocationID) + uOffset;
     int size = imageSize(uTarget).x;
     if (id.x >= size || id.y >= size) return;
     vec2 texel = vec2(id.xy);

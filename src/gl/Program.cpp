@@ -148,6 +148,7 @@ void Program::set(int location, int value) const { glProgramUniform1i(id(), loca
 void Program::set(int location, uint32_t value) const { glProgramUniform1ui(id(), location, value); }
 void Program::set(int location, float value) const { glProgramUniform1f(id(), location, value); }
 void Program::set(int location, const glm::ivec2& value) const { glProgramUniform2iv(id(), location, 1, glm::value_ptr(value)); }
+void Program::set(int location, const glm::ivec3& value) const { glProgramUniform3iv(id(), location, 1, glm::value_ptr(value)); }
 void Program::set(int location, const glm::vec2& value) const { glProgramUniform2fv(id(), location, 1, glm::value_ptr(value)); }
 void Program::set(int location, const glm::vec3& value) const { glProgramUniform3fv(id(), location, 1, glm::value_ptr(value)); }
 void Program::set(int location, const glm::vec4& value) const { glProgramUniform4fv(id(), location, 1, glm::value_ptr(value)); }

@@ -56,6 +56,7 @@ public:
     void set(int location, uint32_t value) const;
     void set(int location, float value) const;
     void set(int location, const glm::ivec2& value) const;
+    void set(int location, const glm::ivec3& value) const;
     void set(int location, const glm::vec2& value) const;
     void set(int location, const glm::vec3& value) const;
     void set(int location, const glm::vec4& value) const;

@@ -38,11 +38,34 @@ std::optional<BakeSettings> bakePreset(std::string_view name);
 /// $SPECULA_CACHE_DIR, else $XDG_CACHE_HOME/specula, else ~/.cache/specula.
 std::filesystem::path defaultCacheDirectory();
 
+/// How setEnvironment bakes what the cache does not hold.
+enum class BakeMode {
+    Now,         ///< the whole bake before it returns (render, bench, bake, tests)
+    Progressive, ///< a small bake before it returns, the full one a step at a time over the
+                 ///< frames (advanceBake), swapped in and cached when done (the viewer)
+};
+
 /// What a bake did (Renderer::setEnvironment).
 struct BakeReport {
     bool fromCache = false;
-    double milliseconds = 0.0;
+    /// BakeMode::Progressive: what is ready is a preview (previewSettings) and the full bake is
+    /// pending.
+    bool progressive = false;
+    double milliseconds = 0.0; ///< until the environment was ready to render (a preview's)
     std::filesystem::path cacheFile; ///< empty when not cached
 };
+
+/// Where a progressive bake stands (advanceBake).
+struct BakeProgress {
+    bool pending = false;  ///< steps are left
+    bool finished = false; ///< this call swapped in the full bake
+    double fraction = 1.0; ///< of its texture reads done
+};
+
+/// A progressive bake's preview of `full` (resolved): a cube of at most kPreviewCubeSize²
+/// faces, its chain with at most kPreviewSamples samples; equal to `full` when that is as small.
+BakeSettings previewSettings(const BakeSettings& full);
+inline constexpr int kPreviewCubeSize = 256;
+inline constexpr int kPreviewSamples = 32;
 
 } // namespace specula::render

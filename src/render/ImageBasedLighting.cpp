@@ -3,10 +3,14 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <sstream>
+#include <thread>
 
 #include <unistd.h>
 
@@ -74,6 +78,18 @@ std::optional<BakeSettings> bakePreset(std::string_view name)
     return std::nullopt;
 }
 
+BakeSettings previewSettings(const BakeSettings& full)
+{
+    BakeSettings p = full;
+    p.name = full.name + " preview";
+    p.cubeSize = std::min(full.cubeSize, kPreviewCubeSize);
+    p.prefilterSize = std::min(full.prefilterSize, p.cubeSize);
+    p.prefilterSamples = std::min(full.prefilterSamples, kPreviewSamples);
+    if (p.cubeSize == full.cubeSize && p.prefilterSize == full.prefilterSize && p.prefilterSamples == full.prefilterSamples) return full;
+    p.prefilterLevels = 0;
+    return p.resolvedFor(p.cubeSize * 2);
+}
+
 fs::path defaultCacheDirectory()
 {
     if (const char* dir = std::getenv("SPECULA_CACHE_DIR"); dir && *dir) return dir;
@@ -93,7 +109,7 @@ int groups(int size)
 
 // Cache files: magic, then per texture (levels, faces, size, RGBA16F texels level by level),
 // then optional extra floats. Written to a temporary file and renamed: never half a cache.
-void writeTextures(std::ofstream& out, const gl::Texture& texture)
+void writeTextures(std::ostream& out, const gl::Texture& texture)
 {
     const int32_t header[3] = {texture.levels(), texture.desc().type == gl::TextureType::Cube ? 6 : 1, texture.width()};
     out.write(reinterpret_cast<const char*>(header), sizeof header);
@@ -137,7 +153,7 @@ bool readTexture(std::ifstream& in, gl::Texture& texture, const std::string& lab
     return true;
 }
 
-void writeAtomically(const fs::path& file, const std::function<void(std::ofstream&)>& write)
+void writeAtomically(const fs::path& file, const std::function<void(std::ostream&)>& write)
 {
     std::error_code ec;
     fs::create_directories(file.parent_path(), ec);
@@ -161,7 +177,7 @@ void writeAtomically(const fs::path& file, const std::function<void(std::ofstrea
     if (ec) fs::remove(temp, ec);
 }
 
-void writeBright(std::ofstream& out, const std::vector<IrradianceSource>& bright)
+void writeBright(std::ostream& out, const std::vector<IrradianceSource>& bright)
 {
     const int32_t count = int32_t(bright.size());
     out.write(reinterpret_cast<const char*>(&count), sizeof count);
@@ -194,6 +210,56 @@ std::string dfgName(const ResolvedShading& variant)
                        scene::brdfFresnelName(variant.fresnel));
 }
 
+/// `map` as an RGBA32F texture, repeating across the seam: values above the half-float range (a
+/// real sun) survive until the cube.
+gl::Texture equirectSource(const EnvironmentMap& map)
+{
+    gl::TextureDesc desc;
+    desc.format = gl::Format::RGBA32F;
+    desc.width = map.width;
+    desc.height = map.height;
+    desc.label = "environment source";
+    gl::Texture source(desc);
+    std::vector<float> rgba(map.texels.size() * 4);
+    for (size_t i = 0; i < map.texels.size(); ++i) {
+        rgba[4 * i] = map.texels[i].x;
+        rgba[4 * i + 1] = map.texels[i].y;
+        rgba[4 * i + 2] = map.texels[i].z;
+        rgba[4 * i + 3] = 1.0f;
+    }
+    source.upload(0, 0, 4, gl::PixelType::Float, rgba.data());
+    glTextureParameteri(source.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    return source;
+}
+
+/// One dispatch of a bake: rows [y, y + rows) of faces [face, face + faces) of a level.
+struct BakeStep {
+    enum class Op { ToCube, Mipmaps, Prefilter };
+    Op op = Op::ToCube;
+    int slot = 0;            ///< 0: the map, 1: the residual (less the specular lobe's sources)
+    int level = 0;           ///< Prefilter: the target's level
+    float roughness = 0.0f;  ///< Prefilter: perceptual roughness
+    int face = 0, faces = 6; ///< faces [face, face + faces)
+    int y = 0, rows = 0;     ///< rows [y, y + rows)
+    double reads = 0.0;      ///< its texture reads: its share of the bake (progress)
+    std::string stage;       ///< the log's stage it belongs to
+};
+
+/// A bake's textures while it runs: slot 0 the map's, slot 1 the residual's (empty when none).
+struct BakeJob {
+    BakeSettings s;
+    /// The equirect sources, shared by a progressive bake's preview and full jobs.
+    std::array<std::shared_ptr<const gl::Texture>, 2> source;
+    std::array<gl::Texture, 2> cube, prefiltered;
+    std::vector<BakeStep> steps;
+    size_t next = 0;
+    double total = 0.0, done = 0.0; ///< texture reads
+    std::vector<std::pair<std::string, double>> stages; ///< milliseconds by stage, in order
+    fs::path cacheFile;
+    Stopwatch watch; ///< since the bake began (its preview included)
+    int frames = 0;  ///< advanceBake calls it took
+};
+
 } // namespace
 
 ResolvedShading dfgVariant(const ResolvedShading& shading)
@@ -212,6 +278,10 @@ struct ImageBasedLighting::Impl {
     // levels from kResidualFirstLevel on made from it.
     gl::Texture residualCube, residualPrefiltered;
     int specularSources = 0; // the first this many bright sources; 0: none
+    int analysedSpecularSources = 0; // what analyse found: specularSources once a bake has a residual
+    /// The full bake still running after a preview (BakeMode::Progressive), and its cache file.
+    std::unique_ptr<BakeJob> pending;
+    std::thread cacheWriter; ///< writing a progressive bake's cache file
     /// DFG tables by dfgKey of their variant, made on first use; the compute program is
     /// compiled only to bake (a table read from the disk cache needs none) and not kept.
     std::map<int, gl::Texture> luts;
@@ -228,116 +298,197 @@ struct ImageBasedLighting::Impl {
         return p;
     }
 
-    /// `map` on a cube of `size`² faces (RGBA16F) with box-filtered mips.
-    gl::Texture cubeFrom(gl::State& state, const EnvironmentMap& map, int size, const char* label)
+    /// The CPU half of a bake and the irradiance cube: the SH, the bright sources, the
+    /// irradiance cube and how many sources the specular lobe takes (analysedSpecularSources).
+    /// Returns the map less those sources (for the residual cube), or nothing when none.
+    std::optional<EnvironmentMap> analyse(gl::State& state, const EnvironmentMap& map)
     {
-        // Source: RGBA32F so values above the half-float range (a real sun) survive until the cube.
-        gl::TextureDesc sourceDesc;
-        sourceDesc.format = gl::Format::RGBA32F;
-        sourceDesc.width = map.width;
-        sourceDesc.height = map.height;
-        sourceDesc.label = "environment source";
-        gl::Texture source(sourceDesc);
-        std::vector<float> rgba(map.texels.size() * 4);
-        for (size_t i = 0; i < map.texels.size(); ++i) {
-            rgba[4 * i] = map.texels[i].x;
-            rgba[4 * i + 1] = map.texels[i].y;
-            rgba[4 * i + 2] = map.texels[i].z;
-            rgba[4 * i + 3] = 1.0f;
-        }
-        source.upload(0, 0, 4, gl::PixelType::Float, rgba.data());
-        glTextureParameteri(source.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-
-        gl::TextureDesc cubeDesc;
-        cubeDesc.type = gl::TextureType::Cube;
-        cubeDesc.format = gl::Format::RGBA16F;
-        cubeDesc.width = cubeDesc.height = size;
-        cubeDesc.levels = 0;
-        cubeDesc.label = label;
-        gl::Texture out(cubeDesc);
-        state.useProgram(program(toCube, "ibl/equirect_to_cube.comp"));
-        state.bindTexture(0, source);
-        state.bindSampler(0, nullptr); // the source's own repeat wrap (set above)
-        state.bindImage(0, out, 0, gl::ImageAccess::WriteOnly, /*layered*/ true);
-        state.dispatchCompute(uint32_t(groups(size)), uint32_t(groups(size)), 6);
-        state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
-        out.generateMipmaps();
-        return out;
-    }
-
-    /// Levels firstLevel .. s.prefilterLevels - 1 of the prefiltered chain of `source` into
-    /// `target`'s levels 0, 1, ... (roughness = level / (levels - 1) of the whole chain).
-    void prefilterLevels(gl::State& state, const gl::Texture& source, gl::Texture& target, int firstLevel, const BakeSettings& s,
-                         const std::function<void(const std::string&)>& lap)
-    {
-        gl::Program& p = program(prefilter, "ibl/prefilter.comp");
-        state.useProgram(p);
-        state.bindTexture(0, source);
-        state.bindSampler(0, nullptr);
-        p.set(p.uniformLocation("uSamples"), uint32_t(s.prefilterSamples));
-        p.set(p.uniformLocation("uSourceSize"), float(source.width()));
-        p.set(p.uniformLocation("uSourceLevels"), float(source.levels()));
-        const int roughness = p.uniformLocation("uPerceptualRoughness");
-        for (int level = firstLevel; level < s.prefilterLevels; ++level) {
-            p.set(roughness, float(level) / float(std::max(s.prefilterLevels - 1, 1)));
-            state.bindImage(0, target, level - firstLevel, gl::ImageAccess::WriteOnly, /*layered*/ true);
-            const int size = target.width(level - firstLevel);
-            state.dispatchCompute(uint32_t(groups(size)), uint32_t(groups(size)), 6);
-            lap(fmt::format("prefilter {}²", size));
-        }
-        state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
-    }
-
-    void bake(gl::State& state, const EnvironmentMap& map, const BakeSettings& s)
-    {
-        gl::DebugGroup group("bake environment");
-        // Each stage's time (glFinish after it: a bake waits for its results anyway), logged.
-        Stopwatch stage;
-        std::string stages;
-        const auto lap = [&](const std::string& name) {
-            glFinish();
-            stages += fmt::format("{}{} {:.0f} ms", stages.empty() ? "" : ", ", name, stage.elapsedMs());
-            stage = Stopwatch();
-        };
-        cube = cubeFrom(state, map, s.cubeSize, "environment cube");
-        lap("cube");
-
-        gl::TextureDesc prefilteredDesc = cube.desc();
-        prefilteredDesc.width = prefilteredDesc.height = s.prefilterSize;
-        prefilteredDesc.levels = s.prefilterLevels;
-        prefilteredDesc.label = "prefiltered environment";
-        prefiltered = gl::Texture(prefilteredDesc);
-        prefilterLevels(state, cube, prefiltered, 0, s, lap);
         sh = projectSh9(map);
         IrradianceSplit split = splitIrradiance(map);
         // The specular lobe's bright sources (ibl/bright_sources.glsl): the first that hold
         // most of the bright sources' flux, where those are a large share of the map's.
-        residualCube = gl::Texture();
-        residualPrefiltered = gl::Texture();
-        specularSources = leadingSourceCount(split.bright);
-        if (split.bright.empty() || brightFluxShare(split, specularSources) < kSourcesSpecularShare) specularSources = 0;
+        analysedSpecularSources = leadingSourceCount(split.bright);
+        if (split.bright.empty() || brightFluxShare(split, analysedSpecularSources) < kSourcesSpecularShare) analysedSpecularSources = 0;
         // The diffuse term sums per pixel only the sources the irradiance cube cannot hold.
         const size_t brightCount = split.bright.size();
-        const size_t exact = foldSmoothSources(split, size_t(specularSources));
+        const size_t exact = foldSmoothSources(split, size_t(analysedSpecularSources));
         bakeIrradiance(state, split);
-        lap("irradiance");
         log::info("the diffuse term sums {} of the {} bright sources per pixel{}", exact, brightCount,
                   exact < brightCount ? ", the irradiance cube holds the rest" : "");
-        if (specularSources > 0) log::info("the specular lobe takes {} of the {} bright sources as lights", specularSources, bright.size());
-        if (specularSources > 0 && s.prefilterLevels > kResidualFirstLevel) {
-            residualCube = cubeFrom(state, withoutBrightSources(map, split, specularSources), s.cubeSize,
-                                    "environment cube less its bright sources");
-            lap("residual cube");
-            gl::TextureDesc desc = prefilteredDesc;
-            desc.width = desc.height = std::max(s.prefilterSize >> kResidualFirstLevel, 1);
-            desc.levels = s.prefilterLevels - kResidualFirstLevel;
-            desc.label = "prefiltered environment less its bright sources";
-            residualPrefiltered = gl::Texture(desc);
-            prefilterLevels(state, residualCube, residualPrefiltered, kResidualFirstLevel, s, lap);
-        } else {
-            specularSources = 0;
+        if (analysedSpecularSources > 0)
+            log::info("the specular lobe takes {} of the {} bright sources as lights", analysedSpecularSources, bright.size());
+        if (analysedSpecularSources == 0) return std::nullopt;
+        return withoutBrightSources(map, split, analysedSpecularSources);
+    }
+
+    /// A bake's GPU work on the map (and its residual, sources[1] when not null): the cubes, then their prefiltered
+    /// chains, as steps run in order (runStep). maxReads 0: one step per level, the bake at
+    /// once; else steps of a band of rows of one face, each about that many texture reads, for
+    /// a bake spread over frames.
+    std::unique_ptr<BakeJob> makeJob(const std::array<std::shared_ptr<const gl::Texture>, 2>& sources, const BakeSettings& s,
+                                     double maxReads)
+    {
+        auto job = std::make_unique<BakeJob>();
+        job->s = s;
+        const bool withResidual = sources[1] && s.prefilterLevels > kResidualFirstLevel;
+        for (int slot = 0; slot < (withResidual ? 2 : 1); ++slot) {
+            job->source[size_t(slot)] = sources[size_t(slot)];
+            gl::TextureDesc cubeDesc;
+            cubeDesc.type = gl::TextureType::Cube;
+            cubeDesc.format = gl::Format::RGBA16F;
+            cubeDesc.width = cubeDesc.height = s.cubeSize;
+            cubeDesc.levels = 0;
+            cubeDesc.label = slot == 0 ? "environment cube" : "environment cube less its bright sources";
+            job->cube[size_t(slot)] = gl::Texture(cubeDesc);
+            // Level 0 of the residual chain is the whole chain's kResidualFirstLevel.
+            const int first = slot == 0 ? 0 : kResidualFirstLevel;
+            gl::TextureDesc desc = cubeDesc;
+            desc.width = desc.height = std::max(s.prefilterSize >> first, 1);
+            desc.levels = s.prefilterLevels - first;
+            desc.label = slot == 0 ? "prefiltered environment" : "prefiltered environment less its bright sources";
+            job->prefiltered[size_t(slot)] = gl::Texture(desc);
+
+            const std::string prefix = slot == 0 ? "" : "residual ";
+            BakeStep toCube{.op = BakeStep::Op::ToCube, .slot = slot, .stage = prefix + "cube"};
+            addBands(*job, toCube, s.cubeSize, 1.0, maxReads);
+            // The box-filtered mips: a bake's own step (glGenerateTextureMipmap is one call).
+            job->steps.push_back({.op = BakeStep::Op::Mipmaps, .slot = slot, .reads = double(s.cubeSize) * s.cubeSize * 6 * 0.5,
+                                  .stage = prefix + "cube"});
+            job->total += job->steps.back().reads;
+            for (int level = first; level < s.prefilterLevels; ++level) {
+                BakeStep step{.op = BakeStep::Op::Prefilter, .slot = slot, .level = level - first,
+                              .roughness = float(level) / float(std::max(s.prefilterLevels - 1, 1))};
+                const int size = job->prefiltered[size_t(slot)].width(level - first);
+                step.stage = fmt::format("{}prefilter {}²", prefix, size);
+                addBands(*job, step, size, step.roughness > 0.0f ? double(s.prefilterSamples) : 1.0, maxReads);
+            }
         }
+        return job;
+    }
+
+    /// Adds `step` over the faces of a level of `size`² texels, `readsPerTexel` texture reads
+    /// each: one step (maxReads 0, or all of it fits), else bands of rows of one face, whole
+    /// work groups, of about maxReads reads.
+    static void addBands(BakeJob& job, BakeStep step, int size, double readsPerTexel, double maxReads)
+    {
+        const double faceReads = double(size) * double(size) * readsPerTexel;
+        if (maxReads <= 0.0 || 6.0 * faceReads <= maxReads) {
+            step.rows = size;
+            step.reads = 6.0 * faceReads;
+            job.total += step.reads;
+            job.steps.push_back(step);
+            return;
+        }
+        const int rows = std::clamp(int(maxReads / (double(size) * readsPerTexel)) / 8 * 8, std::min(8, size), size);
+        step.faces = 1;
+        for (int face = 0; face < 6; ++face) {
+            for (int y = 0; y < size; y += rows) {
+                step.face = face;
+                step.y = y;
+                step.rows = std::min(rows, size - y);
+                step.reads = double(size) * step.rows * readsPerTexel;
+                job.total += step.reads;
+                job.steps.push_back(step);
+            }
+        }
+    }
+
+    void runStep(gl::State& state, BakeJob& job, const BakeStep& step)
+    {
+        const size_t slot = size_t(step.slot);
+        gl::Texture& cube = job.cube[slot];
+        switch (step.op) {
+        case BakeStep::Op::ToCube: {
+            gl::Program& p = program(toCube, "ibl/equirect_to_cube.comp");
+            state.useProgram(p);
+            state.bindTexture(0, *job.source[slot]);
+            state.bindSampler(0, nullptr); // the source's own repeat wrap (equirectSource)
+            p.set(p.uniformLocation("uOffset"), glm::ivec3(0, step.y, step.face));
+            state.bindImage(0, cube, 0, gl::ImageAccess::WriteOnly, /*layered*/ true);
+            state.dispatchCompute(uint32_t(groups(cube.width())), uint32_t(groups(step.rows)), uint32_t(step.faces));
+            break;
+        }
+        case BakeStep::Op::Mipmaps:
+            cube.generateMipmaps();
+            job.source[slot].reset(); // this job reads the equirect no more
+            break;
+        case BakeStep::Op::Prefilter: {
+            gl::Program& p = program(prefilter, "ibl/prefilter.comp");
+            state.useProgram(p);
+            state.bindTexture(0, cube);
+            state.bindSampler(0, nullptr);
+            p.set(p.uniformLocation("uSamples"), uint32_t(job.s.prefilterSamples));
+            p.set(p.uniformLocation("uSourceSize"), float(cube.width()));
+            p.set(p.uniformLocation("uSourceLevels"), float(cube.levels()));
+            p.set(p.uniformLocation("uPerceptualRoughness"), step.roughness);
+            p.set(p.uniformLocation("uOffset"), glm::ivec3(0, step.y, step.face));
+            gl::Texture& target = job.prefiltered[slot];
+            state.bindImage(0, target, step.level, gl::ImageAccess::WriteOnly, /*layered*/ true);
+            state.dispatchCompute(uint32_t(groups(target.width(step.level))), uint32_t(groups(step.rows)), uint32_t(step.faces));
+            break;
+        }
+        }
+        state.memoryBarrier(gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
+        ++job.next;
+        job.done += step.reads;
+    }
+
+    /// Runs `job`'s next step and waits for it; its time goes to its stage's.
+    void runTimedStep(gl::State& state, BakeJob& job)
+    {
+        const BakeStep& step = job.steps[job.next];
+        Stopwatch watch;
+        runStep(state, job, step);
+        glFinish(); // the step's time, not its submission's (a bake waits for its results anyway)
+        const double ms = watch.elapsedMs();
+        auto it = std::find_if(job.stages.begin(), job.stages.end(), [&](const auto& s) { return s.first == step.stage; });
+        if (it == job.stages.end()) job.stages.emplace_back(step.stage, ms);
+        else it->second += ms;
+    }
+
+    /// Makes `job`'s textures the environment's, logs its stages and writes the cache file
+    /// (`inBackground`: read back now, written to the disk by a thread, so that a viewer's frame
+    /// does not wait for it).
+    void finish(std::unique_ptr<BakeJob> job, const fs::path& cacheFile, bool inBackground = false)
+    {
+        std::string stages;
+        for (const auto& [name, ms] : job->stages) stages += fmt::format("{}{} {:.0f} ms", stages.empty() ? "" : ", ", name, ms);
         log::info("bake stages: {}", stages);
+        cube = std::move(job->cube[0]);
+        prefiltered = std::move(job->prefiltered[0]);
+        residualCube = std::move(job->cube[1]);
+        residualPrefiltered = std::move(job->prefiltered[1]);
+        specularSources = residualCube ? analysedSpecularSources : 0;
+        has = true;
+        if (cacheFile.empty()) return;
+        const auto write = [&](std::ostream& out) {
+            writeTextures(out, cube);
+            writeTextures(out, prefiltered);
+            writeTextures(out, irradiance);
+            out.write(reinterpret_cast<const char*>(sh.data()), sizeof(Sh9));
+            writeBright(out, bright);
+            const int32_t residual = specularSources;
+            out.write(reinterpret_cast<const char*>(&residual), sizeof residual);
+            if (residual) {
+                writeTextures(out, residualCube);
+                writeTextures(out, residualPrefiltered);
+            }
+        };
+        if (!inBackground) {
+            writeAtomically(cacheFile, write);
+            return;
+        }
+        std::ostringstream bytes;
+        write(bytes);
+        if (cacheWriter.joinable()) cacheWriter.join();
+        cacheWriter = std::thread([file = cacheFile, data = std::move(bytes).str()] {
+            writeAtomically(file, [&](std::ostream& out) { out.write(data.data(), std::streamsize(data.size())); });
+        });
+    }
+
+    ~Impl()
+    {
+        if (cacheWriter.joinable()) cacheWriter.join();
     }
 
     /// The cache's residual textures (after the bright sources): the specular sources' count,
@@ -418,7 +569,7 @@ const gl::Texture& ImageBasedLighting::residualPrefiltered() const { return mImp
 void ImageBasedLighting::setLutCacheDirectory(const fs::path& directory) { mImpl->lutCacheDirectory = directory; }
 
 BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const EnvironmentMap& original, const BakeSettings& requested,
-                                              const fs::path& cacheDirectory)
+                                              const fs::path& cacheDirectory, BakeMode mode)
 {
     // The bake uploads the map as one 2D texture: wider or taller than the GL limit, it is
     // downscaled first (a GL error otherwise).
@@ -430,6 +581,7 @@ BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const Environmen
                   original.height, maxSize, map.width, map.height);
     const BakeSettings settings = requested.resolvedFor(map.width);
     Impl& r = *mImpl;
+    r.pending.reset(); // a new environment ends the last one's bake
     Stopwatch watch;
     BakeReport report;
     // Tables of other sizes or sample counts are other tables.
@@ -452,30 +604,76 @@ BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const Environmen
             return report;
         }
     }
-    log::info("baking environment ({}x{}, preset {}: cube {}², prefilter {}² x {} levels, {} samples)", map.width, map.height,
-              settings.name, settings.cubeSize, settings.prefilterSize, settings.prefilterLevels, settings.prefilterSamples);
-    r.bake(state, map, settings);
-    r.has = true;
-    if (!report.cacheFile.empty()) {
-        writeAtomically(report.cacheFile, [&](std::ofstream& out) {
-            writeTextures(out, r.cube);
-            writeTextures(out, r.prefiltered);
-            writeTextures(out, r.irradiance);
-            out.write(reinterpret_cast<const char*>(r.sh.data()), sizeof(Sh9));
-            writeBright(out, r.bright);
-            const int32_t residual = r.specularSources;
-            out.write(reinterpret_cast<const char*>(&residual), sizeof residual);
-            if (residual) {
-                writeTextures(out, r.residualCube);
-                writeTextures(out, r.residualPrefiltered);
-            }
-        });
+    const BakeSettings preview = previewSettings(settings);
+    const bool progressive = mode == BakeMode::Progressive && (preview.cubeSize != settings.cubeSize ||
+                                                                 preview.prefilterSamples != settings.prefilterSamples);
+    log::info("baking environment ({}x{}, preset {}: cube {}², prefilter {}² x {} levels, {} samples{})", map.width, map.height,
+              settings.name, settings.cubeSize, settings.prefilterSize, settings.prefilterLevels, settings.prefilterSamples,
+              progressive ? fmt::format("; a preview of a {}² cube with {} samples first", preview.cubeSize, preview.prefilterSamples) : "");
+    {
+        gl::DebugGroup group("bake environment");
+        Stopwatch analysis;
+        const std::optional<EnvironmentMap> residual = r.analyse(state, map);
+        glFinish();
+        const double analysisMs = analysis.elapsedMs();
+        std::array<std::shared_ptr<const gl::Texture>, 2> sources;
+        sources[0] = std::make_shared<const gl::Texture>(equirectSource(map));
+        if (residual) sources[1] = std::make_shared<const gl::Texture>(equirectSource(*residual));
+        // A progressive bake's steps: a band of rows of a face, about 2M texture reads each
+        // (10-20 ms on llvmpipe, well under one on a GPU).
+        constexpr double kReadsPerStep = 2.0e6;
+        std::unique_ptr<BakeJob> job = r.makeJob(sources, progressive ? preview : settings, 0.0);
+        job->stages.emplace_back("irradiance", analysisMs);
+        if (progressive) r.pending = r.makeJob(sources, settings, kReadsPerStep);
+        while (job->next < job->steps.size()) r.runTimedStep(state, *job);
+        r.finish(std::move(job), progressive ? fs::path() : report.cacheFile);
     }
     glFinish();
     report.milliseconds = watch.elapsedMs();
-    log::info("baked environment in {:.0f} ms{}", report.milliseconds,
-              report.cacheFile.empty() ? "" : "; cached as " + report.cacheFile.string());
+    if (progressive) {
+        report.progressive = true;
+        r.pending->cacheFile = report.cacheFile;
+        r.pending->watch = watch;
+        log::info("baked the environment's preview in {:.0f} ms; the full bake follows over the frames ({} steps)", report.milliseconds,
+                  r.pending->steps.size());
+    } else {
+        log::info("baked environment in {:.0f} ms{}", report.milliseconds,
+                  report.cacheFile.empty() ? "" : "; cached as " + report.cacheFile.string());
+    }
     return report;
+}
+
+BakeProgress ImageBasedLighting::advanceBake(gl::State& state, double budgetMs)
+{
+    Impl& r = *mImpl;
+    BakeProgress progress;
+    if (!r.pending) return progress;
+    BakeJob& job = *r.pending;
+    gl::DebugGroup group("bake environment");
+    Stopwatch watch;
+    ++job.frames;
+    do {
+        r.runTimedStep(state, job);
+    } while (job.next < job.steps.size() && watch.elapsedMs() < budgetMs);
+    progress.fraction = job.total > 0.0 ? job.done / job.total : 1.0;
+    if (job.next < job.steps.size()) {
+        progress.pending = true;
+        return progress;
+    }
+    progress.finished = true;
+    const double ms = job.watch.elapsedMs();
+    const int frames = job.frames;
+    const fs::path file = job.cacheFile;
+    Stopwatch finishing;
+    r.finish(std::move(r.pending), file, /*inBackground*/ true);
+    log::info("baked environment over {} frames, {:.1f} s after it began{} ({:.0f} ms)", frames, ms / 1000.0,
+              file.empty() ? "" : "; cached as " + file.string(), finishing.elapsedMs());
+    return progress;
+}
+
+void ImageBasedLighting::waitForCacheWrite()
+{
+    if (mImpl->cacheWriter.joinable()) mImpl->cacheWriter.join();
 }
 
 bool ImageBasedLighting::hasDfg(const ResolvedShading& shading) const
@@ -511,7 +709,7 @@ const gl::Texture& ImageBasedLighting::dfg(gl::State& state, const ResolvedShadi
     const double compileMs = r.bakeLut(state, lut, defines, label);
     glFinish(); // the time of the bake, not of its submission
     const double bakeMs = watch.elapsedMs();
-    if (!file.empty()) writeAtomically(file, [&](std::ofstream& out) { writeTextures(out, lut); });
+    if (!file.empty()) writeAtomically(file, [&](std::ostream& out) { writeTextures(out, lut); });
     log::info("baked the DFG table of {} ({}², {} samples) in {:.0f} ms (compiling {:.0f} ms)", name, r.lutSettings.lutSize,
               r.lutSettings.lutSamples, bakeMs, compileMs);
     return lut;
@@ -536,7 +734,7 @@ const gl::Texture& ImageBasedLighting::sheenAlbedo(gl::State& state)
     const double compileMs = r.bakeLut(state, r.sheenLut, {}, label, "ibl/sheen_albedo.comp", samples);
     glFinish(); // the time of the bake, not of its submission
     const double bakeMs = watch.elapsedMs();
-    if (!file.empty()) writeAtomically(file, [&](std::ofstream& out) { writeTextures(out, r.sheenLut); });
+    if (!file.empty()) writeAtomically(file, [&](std::ostream& out) { writeTextures(out, r.sheenLut); });
     log::info("baked the sheen albedo table ({}², {} samples) in {:.0f} ms (compiling {:.0f} ms)", r.lutSettings.lutSize, samples,
               bakeMs, compileMs);
     return r.sheenLut;

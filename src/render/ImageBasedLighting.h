@@ -34,8 +34,17 @@ public:
 
     /// Makes the GPU resources for `map`: from the cache when `cacheDirectory` holds them,
     /// else by baking (and then writing the cache, if a directory is given).
+    /// BakeMode::Progressive: a preview now and the full bake by advanceBake.
     BakeReport setEnvironment(gl::State& state, const EnvironmentMap& map, const BakeSettings& settings,
-                              const std::filesystem::path& cacheDirectory = {});
+                              const std::filesystem::path& cacheDirectory = {}, BakeMode mode = BakeMode::Now);
+    /// Runs the pending progressive bake's next steps, waiting for each, until `budgetMs` is
+    /// spent (at least one step; all of them with an infinite budget). When the last is done
+    /// the full bake replaces the preview (forget cached texture bindings: `finished`) and is
+    /// written to the cache.
+    BakeProgress advanceBake(gl::State& state, double budgetMs);
+    /// A progressive bake's cache file is written by a thread (the frame that finishes the bake
+    /// does not wait for the disk): waits until it is (the destructor waits too).
+    void waitForCacheWrite();
 
     bool hasEnvironment() const;
     const Sh9& sh() const;

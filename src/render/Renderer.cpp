@@ -243,10 +243,19 @@ void Renderer::setPose(int animation, float seconds)
     }
 }
 
-BakeReport Renderer::setEnvironment(const EnvironmentMap& map, const BakeSettings& settings, const std::filesystem::path& cacheDirectory)
+BakeReport Renderer::setEnvironment(const EnvironmentMap& map, const BakeSettings& settings, const std::filesystem::path& cacheDirectory,
+                                    BakeMode mode)
 {
     setCacheDirectory(cacheDirectory);
-    return mImpl->stores.ibl.setEnvironment(mImpl->stores.state, map, settings, cacheDirectory);
+    return mImpl->stores.ibl.setEnvironment(mImpl->stores.state, map, settings, cacheDirectory, mode);
+}
+
+BakeProgress Renderer::advanceEnvironmentBake(double budgetMs)
+{
+    FrameStores& stores = mImpl->stores;
+    const BakeProgress progress = stores.ibl.advanceBake(stores.state, budgetMs);
+    if (progress.finished) stores.state.reset(); // the preview's textures are deleted
+    return progress;
 }
 
 void Renderer::clearEnvironment()

@@ -230,8 +230,13 @@ public:
 
     /// Sets the environment for image-based lighting and the skybox, baking it (or reading the
     /// bake from `cacheDirectory` when it holds one for this content and these settings).
+    /// BakeMode::Progressive: a small bake now, the full one over later frames
+    /// (advanceEnvironmentBake).
     BakeReport setEnvironment(const EnvironmentMap& map, const BakeSettings& settings = {},
-                              const std::filesystem::path& cacheDirectory = {});
+                              const std::filesystem::path& cacheDirectory = {}, BakeMode mode = BakeMode::Now);
+    /// A progressive bake's next steps, for about `budgetMs` (at least one step); the frame after
+    /// the last one renders with the full bake.
+    BakeProgress advanceEnvironmentBake(double budgetMs);
     void clearEnvironment();
     /// Where baked tables are cached on disk (empty: nowhere). The DFG tables read there are
     /// needed with or without an environment (energy compensation), so this outlives

@@ -576,3 +576,20 @@ TEST(CliViewer, LoadingAModelAndAnEnvironmentAgainLeavesNothingBehind)
     // free, and in one CI run it rose by 181 MiB from load 8 to 16 with the heap flat.
     EXPECT_LT(std::get<3>(samples[2]) - std::get<3>(samples[1]), 200.0);
 }
+
+// Without a bake cache the viewer's first frame shows a preview of the environment (a 256²
+// cube) and bakes the full one over the next frames; a screenshot finishes it first. Expected:
+// the screenshot is `specula render`'s image of the same view, which bakes at once.
+TEST(CliViewer, ScreenshotAfterAProgressiveBakeIsTheRenderedImage)
+{
+    ASSERT_TRUE(haveDisplay()) << "no display: run through scripts/test.sh, which uses Xvfb (a window test must not skip)";
+    const std::string dir = tempDir("viewer-progressive");
+    const std::string common = " learnopengl-ibl --camera 0 --env " + kEnv + " --no-cache --width 240 --height 135";
+    const auto rendered = runCli("render" + common + " -o " + dir + "/render.png");
+    ASSERT_EQ(rendered.exitCode, 0) << rendered.err;
+    const auto viewed = runCli("view" + common + " --hide-ui --frames 2 --screenshot " + dir + "/view.png");
+    ASSERT_EQ(viewed.exitCode, 0) << viewed.err;
+    EXPECT_NE(viewed.err.find("baked the environment's preview"), std::string::npos) << viewed.err;
+    EXPECT_NE(viewed.err.find("baked environment over"), std::string::npos) << viewed.err;
+    EXPECT_LT(meanDifference(specula::readPng(dir + "/view.png"), specula::readPng(dir + "/render.png")), 0.05);
+}

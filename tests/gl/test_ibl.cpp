@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "shading/Brdf.h"
@@ -747,4 +749,83 @@ TEST_F(GlTest, SkyboxShowsTheMapAcrossCubeFaceEdges)
         EXPECT_LT(rest, 0.01);
         EXPECT_LT(edge, 1.5 * rest + 0.0005) << face << "² cube";
     }
+}
+
+// The viewer's progressive bake: a preview (a 256² cube, 32 samples) before the first frame,
+// then the full bake a band of rows of a face at a time, one step per advanceBake with no
+// budget. Expected, independently of the bake's quality (the tests above measure that): the
+// full bake's texels bit for bit as the bake at once makes them (each texel is the same
+// invocation's in both; the bands only split the dispatches), the residual chain of studio's
+// softboxes included; progress that grows with every step; the cache file written only when the
+// last step is done (by a thread: waited for). Fails if the shaders ignore uOffset (every band
+// lands on the first rows).
+TEST_F(GlTest, ProgressiveBakeEndsWithTheBakeAtOnce)
+{
+    namespace fs = std::filesystem;
+    const render::EnvironmentMap map = render::loadEnvironmentMap(std::string(SPECULA_ASSETS_DIR) + "/env/studio_1k.hdr");
+    render::BakeSettings settings;
+    settings.prefilterSamples = 64; // the test's time; the steps are sized by their reads
+    const fs::path cache = fs::temp_directory_path() / ("specula-progressive-" + std::to_string(::getpid()));
+    fs::remove_all(cache);
+    const auto cached = [&] {
+        std::error_code ec;
+        for (const auto& entry : fs::directory_iterator(cache, ec))
+            if (entry.path().filename().string().rfind("env-", 0) == 0) return true;
+        return false;
+    };
+    gl::State state;
+    render::ImageBasedLighting now;
+    now.setEnvironment(state, map, settings);
+    ASSERT_GT(now.cube().width(), render::kPreviewCubeSize);
+    ASSERT_GT(now.specularSourceCount(), 0); // the residual chain is baked too
+
+    render::ImageBasedLighting progressive;
+    const render::BakeReport report = progressive.setEnvironment(state, map, settings, cache, render::BakeMode::Progressive);
+    ASSERT_TRUE(report.progressive);
+    ASSERT_TRUE(progressive.hasEnvironment());
+    EXPECT_EQ(progressive.cube().width(), render::kPreviewCubeSize);
+    EXPECT_FALSE(cached()); // a preview is never cached
+    int steps = 0;
+    double last = 0.0;
+    render::BakeProgress progress;
+    do {
+        progress = progressive.advanceBake(state, 0.0);
+        ++steps;
+        EXPECT_GT(progress.fraction, last);
+        last = progress.fraction;
+        if (progress.pending) {
+            ASSERT_FALSE(cached()) << "step " << steps;
+        }
+    } while (progress.pending && steps < 100000);
+    EXPECT_TRUE(progress.finished);
+    EXPECT_DOUBLE_EQ(progress.fraction, 1.0);
+    EXPECT_GT(steps, 20);
+    progressive.waitForCacheWrite();
+    EXPECT_TRUE(cached());
+    EXPECT_FALSE(progressive.advanceBake(state, 0.0).pending);
+
+    EXPECT_EQ(progressive.specularSourceCount(), now.specularSourceCount());
+    const auto same = [](const gl::Texture& a, const gl::Texture& b, const char* what) {
+        SCOPED_TRACE(what);
+        ASSERT_EQ(a.width(), b.width());
+        ASSERT_EQ(a.levels(), b.levels());
+        for (int level = 0; level < a.levels(); ++level) {
+            const std::vector<float> x = a.readFloat(level), y = b.readFloat(level);
+            size_t differ = 0, first = x.size();
+            for (size_t i = 0; i < x.size(); ++i)
+                if (x[i] != y[i] && differ++ == 0) first = i;
+            EXPECT_EQ(differ, 0u) << "level " << level << ", first at float " << first << " of " << x.size();
+        }
+    };
+    same(progressive.cube(), now.cube(), "cube");
+    same(progressive.prefiltered(), now.prefiltered(), "prefiltered");
+    same(progressive.residualCube(), now.residualCube(), "residual cube");
+    same(progressive.residualPrefiltered(), now.residualPrefiltered(), "residual prefiltered");
+    same(progressive.irradiance(), now.irradiance(), "irradiance");
+
+    // The cache holds the full bake.
+    render::ImageBasedLighting reread;
+    EXPECT_TRUE(reread.setEnvironment(state, map, settings, cache, render::BakeMode::Progressive).fromCache);
+    same(reread.prefiltered(), now.prefiltered(), "prefiltered from the cache");
+    fs::remove_all(cache);
 }
