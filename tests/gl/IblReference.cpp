@@ -242,7 +242,7 @@ EnvironmentQuadrature::EnvironmentQuadrature(const render::EnvironmentMap& map, 
 }
 
 glm::dvec3 EnvironmentQuadrature::radiance(const render::brdf::Surface& surface, const glm::dvec3& n, const glm::dvec3& v,
-                                           const glm::dvec3& specularCompensation, bool everyTexel) const
+                                           const glm::dvec3& specularCompensation, bool everyTexel, const dvec3* diffuseWeight) const
 {
     namespace brdf = render::brdf;
     const bool mirror = surface.perceptualRoughness < 1e-3;
@@ -252,6 +252,13 @@ glm::dvec3 EnvironmentQuadrature::radiance(const render::brdf::Surface& surface,
         if (glm::dot(n, l) <= 0.0) return dvec3(0.0);
         dvec3 diffuse, specular;
         brdf::evaluateLobes(surface, n, v, l, diffuse, specular);
+        if (diffuseWeight) {
+            // The diffuse lobe itself, uncoupled from this direction's Fresnel, then weighted.
+            const dvec3 h = glm::normalize(v + l);
+            diffuse = surface.baseColor * (1.0 - surface.metallic) * *diffuseWeight *
+                      brdf::diffuseLobe(surface.diffuse, r, std::abs(glm::dot(n, v)), glm::dot(n, l),
+                                        std::clamp(glm::dot(l, h), 0.0, 1.0), glm::dot(v, l));
+        }
         return (diffuse + (mirror ? dvec3(0.0) : specular * specularCompensation)) * glm::dot(n, l);
     };
     // Where D is above 1 % of its peak: θ_h < atan(3α), θ_l < 2 θ_h about the mirror direction

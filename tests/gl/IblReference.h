@@ -80,8 +80,13 @@ public:
     explicit EnvironmentQuadrature(const render::EnvironmentMap& map, int block = 4);
     /// L_o(v), as referenceRadiance's (the mirror's delta likewise exact, the map read
     /// bilinearly in the mirror direction). `everyTexel` sums every texel one by one.
+    /// `diffuseWeight` null: the glTF BRDF's coupling, the diffuse lobe × (1 − F(v·h)) for each
+    /// light direction. Else the energy-conserving layering of Cycles' Principled BSDF and
+    /// OpenPBR (albedo scaling, Kulla & Conty 2017): the diffuse lobe × *diffuseWeight, one
+    /// weight for all directions, 1 − the specular lobe's directional albedo E(n·v).
     glm::dvec3 radiance(const render::brdf::Surface& surface, const glm::dvec3& n, const glm::dvec3& v,
-                        const glm::dvec3& specularCompensation, bool everyTexel = false) const;
+                        const glm::dvec3& specularCompensation, bool everyTexel = false,
+                        const glm::dvec3* diffuseWeight = nullptr) const;
 
 private:
     struct Texel {

@@ -48,16 +48,17 @@ render::brdf::Surface cpuSurface(bool metal, float roughness)
     return s;
 }
 
-// E(n·v) of a white metal (F = 1) under the punctual BRDF's own V, by quadrature of
-// GGX-sampled half vectors on a 256 × 64 grid: the single scattering the renderer's
-// multiple-scattering compensation, 1 + f0 (1 / E − 1), restores to 1. Tabulated over n·v.
+// E(n·v) of a surface's specular lobe, by quadrature of GGX-sampled half vectors on a 256 × 64
+// grid, tabulated over n·v: of a white metal (F = 1) under the punctual BRDF's own V, the single
+// scattering the renderer's multiple-scattering compensation, 1 + f0 (1 / E − 1), restores to 1;
+// of the dielectric (F included), for the energy-conserving reference's diffuse weight.
 struct AlbedoTable {
     std::vector<double> e; // at n·v = (i + 0.5) / size
-    explicit AlbedoTable(float roughness, int size = 64)
+    explicit AlbedoTable(float roughness, int size = 64) : AlbedoTable(whiteMetal(roughness), size) {}
+    explicit AlbedoTable(render::brdf::Surface surface, int size = 64)
     {
-        render::brdf::Surface white = cpuSurface(true, std::max(roughness, float(render::brdf::kMinPerceptualRoughness)));
-        white.baseColor = glm::dvec3(1.0);
-        const double r = white.perceptualRoughness, alpha = r * r;
+        surface.perceptualRoughness = std::max(surface.perceptualRoughness, render::brdf::kMinPerceptualRoughness);
+        const double r = surface.perceptualRoughness, alpha = r * r;
         for (int i = 0; i < size; ++i) {
             const double NoV = (i + 0.5) / size;
             const glm::dvec3 n(0, 0, 1), v(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
@@ -74,11 +75,17 @@ struct AlbedoTable {
                     if (l.z <= 0.0 || VoH <= 0.0) continue;
                     const double pdf = render::brdf::D_GGX(cosT, alpha) * cosT / (4.0 * VoH);
                     glm::dvec3 diffuse, specular;
-                    render::brdf::evaluateLobes(white, n, v, l, diffuse, specular);
+                    render::brdf::evaluateLobes(surface, n, v, l, diffuse, specular);
                     sum += specular.x * l.z / pdf;
                 }
             e.push_back(sum / (kU * kPhi));
         }
+    }
+    static render::brdf::Surface whiteMetal(float roughness)
+    {
+        render::brdf::Surface white = cpuSurface(true, roughness);
+        white.baseColor = glm::dvec3(1.0);
+        return white;
     }
     double at(double NoV) const
     {
@@ -111,15 +118,19 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
             glm::vec3 n;
             if (sphereNormal(x, y, n)) pixels.push_back({x, y, glm::dvec3(n)});
         }
-    std::vector<AlbedoTable> albedo;
-    for (float r : kRoughnesses) albedo.emplace_back(r);
+    std::vector<AlbedoTable> albedo, dielectricAlbedo;
+    for (float r : kRoughnesses) {
+        albedo.emplace_back(r);
+        dielectricAlbedo.emplace_back(cpuSurface(false, r));
+    }
 
     struct Result {
         std::string what;
         double error, bound;
     };
     std::vector<Result> results;
-    std::string table = "| map | material | mode | r 0 | r 0.25 | r 0.5 | r 0.75 | r 1 |\n|---|---|---|---|---|---|---|---|\n";
+    const std::string header = "| map | material | mode | r 0 | r 0.25 | r 0.5 | r 0.75 | r 1 |\n|---|---|---|---|---|---|---|---|\n";
+    std::string table = header, layered = header;
     for (const char* mapName : {"studio_1k.hdr", "sunset_1k.hdr", "venice_1k.hdr"}) {
         SCOPED_TRACE(mapName);
         const std::string file = std::string(SPECULA_ASSETS_DIR) + "/env/" + mapName;
@@ -137,17 +148,24 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
                 m.roughnessFactor = r;
                 materials.push_back(m);
             }
-            // The reference, once per sphere and pixel, on every core.
-            std::vector<glm::dvec3> reference(size_t(kSpheres) * pixels.size());
+            // The reference, once per sphere and pixel, on every core; for the dielectric also
+            // with the energy-conserving layering (EnvironmentQuadrature::radiance): the diffuse
+            // lobe × (1 − E(n·v) × the compensation), E the dielectric's own specular albedo.
+            std::vector<glm::dvec3> reference(size_t(kSpheres) * pixels.size()), referenceLayered(metal ? 0 : reference.size());
             test::parallelFor(reference.size(), [&](size_t k) {
                 const int s = int(k / pixels.size());
                 const Pixel& p = pixels[k % pixels.size()];
                 const glm::dvec3 v = viewVector(s, kSpheres, p.n);
                 const render::brdf::Surface surface = cpuSurface(metal, kRoughnesses[s]);
-                const double e = kRoughnesses[s] == 0.0f ? 1.0 : albedo[size_t(s)].at(glm::dot(p.n, v));
+                const double NoV = glm::dot(p.n, v);
+                const double e = kRoughnesses[s] == 0.0f ? 1.0 : albedo[size_t(s)].at(NoV);
                 const glm::dvec3 f0 = glm::mix(glm::dvec3(0.04), surface.baseColor, surface.metallic);
                 const glm::dvec3 compensation = glm::dvec3(1.0) + f0 * (1.0 / e - 1.0);
                 reference[k] = quadrature.radiance(surface, p.n, v, compensation);
+                if (!metal) {
+                    const glm::dvec3 weight = glm::dvec3(1.0) - dielectricAlbedo[size_t(s)].at(NoV) * compensation;
+                    referenceLayered[k] = quadrature.radiance(surface, p.n, v, compensation, false, &weight);
+                }
             });
 
             for (render::IblSpecular mode : {render::IblSpecular::SplitSum, render::IblSpecular::Importance}) {
@@ -156,17 +174,33 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
                 const SphereRender r = renderSpheres(renderer, materials, settings);
                 std::string row = std::string("| ") + mapName + " | " + (metal ? "copper" : "orange dielectric") + " | " +
                                   render::iblSpecularName(mode) + " |";
-                for (int s = 0; s < kSpheres; ++s) {
+                std::string layeredRow = row;
+                const auto sphereError = [&](const std::vector<glm::dvec3>& against, int s) {
                     SphereError error;
                     for (size_t i = 0; i < pixels.size(); ++i) {
-                        const glm::dvec3& ref = reference[size_t(s) * pixels.size() + i];
+                        const glm::dvec3& ref = against[size_t(s) * pixels.size() + i];
                         const glm::dvec3 got(pixel(r.image, s * kSize + pixels[i].x, pixels[i].y));
                         const glm::dvec3 d = glm::abs(got - ref);
                         error.sumAbs += d.x + d.y + d.z;
                         error.sumReference += ref.x + ref.y + ref.z;
                         ++error.pixels;
                     }
+                    return error;
+                };
+                const bool importance = mode == render::IblSpecular::Importance;
+                for (int s = 0; s < kSpheres; ++s) {
+                    const SphereError error = sphereError(reference, s);
                     const float roughness = kRoughnesses[s];
+                    if (!metal) {
+                        // Against the layered reference the targets hold for the dielectric
+                        // at every roughness: importance 3 %, split sum 6 % (measured 0.1-1.9 % and
+                        // 0.2-5.0 %). Against the glTF coupling they do not (the bounds below).
+                        const double e = sphereError(referenceLayered, s).relative();
+                        layeredRow += fmt::format(" {:.2f} % |", 100.0 * e);
+                        results.push_back({std::string(mapName) + " dielectric, layered reference, roughness " +
+                                               fmt::format("{}", roughness) + " " + render::iblSpecularName(mode),
+                                           e, importance ? 0.03 : 0.06});
+                    }
                     // Bounds, from the measurements in docs/ibl.md (a noise-free reference: the
                     // measured errors plus a margin for other drivers' rounding). The issue's
                     // targets (importance 3 %, split sum 6 %, mirror 2 %) are met by the mirror
@@ -175,7 +209,6 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
                     // 0.5 on and fails); see docs/ibl.md for what is left. Without the bright
                     // sources as the specular lobe's lights the studio's copper is 12-48 % off in
                     // importance and 18-27 % in the split sum, and fails these.
-                    const bool importance = mode == render::IblSpecular::Importance;
                     // The smooth dielectric's diffuse coupling (docs/ibl.md): 1 - E(n.v), not the
                     // glTF BRDF's per-direction 1 - F(v.h), which reflects more than it receives
                     // near grazing: 3.7-7.8 % in both modes.
@@ -188,6 +221,7 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
                                        error.relative(), bound});
                 }
                 table += row + "\n";
+                if (!metal) layered += layeredRow + "\n";
                 if (const char* dump = std::getenv("SPECULA_IBL_REFERENCE_DUMP")) {
                     // The GPU image above the reference, to look at (a .hdr per map, material and mode).
                     ImageFloat both{r.image.width, 2 * r.image.height, {}};
@@ -212,6 +246,7 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
         }
     }
     std::printf("mean relative absolute error against the reference:\n%s", table.c_str());
+    std::printf("the dielectric against the energy-conserving layered reference:\n%s", layered.c_str());
     for (const Result& r : results) EXPECT_LT(r.error, r.bound) << r.what;
 }
 
