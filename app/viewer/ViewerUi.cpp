@@ -469,6 +469,10 @@ void environmentPanel(Viewer& viewer)
     if (!panelHeader(viewer, "Environment")) return;
     render::EnvironmentView& e = viewer.settings().environment;
     ImGui::Text("file: %s", viewer.environmentName().empty() ? "(none)" : viewer.environmentName().c_str());
+    if (viewer.bakeProgress().pending) {
+        // A bake the cache did not hold: the frames show its preview until the full one is in.
+        ImGui::ProgressBar(float(viewer.bakeProgress().fraction), ImVec2(-1.0f, 0.0f), "baking (preview shown)");
+    }
     std::array<char, 512>& path = viewer.environmentInput;
     ImGui::InputText("##envpath", path.data(), path.size());
     ImGui::SameLine();
