@@ -216,7 +216,8 @@ void Viewer::renderFrame(float deltaSeconds)
 
 void Viewer::advanceEnvironmentBake()
 {
-    if (mBake.pending) mBake = mRenderer->advanceEnvironmentBake(std::max(8.0, mLastRenderMs));
+    // At most 100 ms: a frame that compiled programs (the first) is no measure of the next.
+    if (mBake.pending) mBake = mRenderer->advanceEnvironmentBake(std::clamp(mLastRenderMs, 8.0, 100.0));
 }
 
 bool Viewer::finishEnvironmentBake()

@@ -122,7 +122,7 @@ public:
     const std::string& environmentName() const { return mEnvironmentName; }
     const StartupTimes& startup() const { return mStartup; }
     /// After a frame is shown: the environment's progressive bake (a preview renders until it
-    /// is done) runs its next steps for as long as the frame took to render, at least 8 ms.
+    /// is done) runs its next steps for as long as the frame took to render, 8 to 100 ms.
     void advanceEnvironmentBake();
     /// The rest of the progressive bake at once (before a screenshot); whether one was pending.
     bool finishEnvironmentBake();
