@@ -38,11 +38,12 @@ std::string BakeSettings::key() const
     // (the spherical harmonics and irradiance sources of EnvironmentMap) or the file layout
     // changes (v2: the irradiance cube; v3: the bright sources' residual cube and prefiltered
     // levels; v4: with the count of the sources the specular lobe takes; v5: the bright sources the
-    // irradiance cube can hold folded into it; v6: each source's spread).
+    // irradiance cube can hold folded into it; v6: each source's spread; v7: the prefiltered
+    // chain's level 0 not stored when it is the cube's).
     const uint64_t shaders = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/equirect_to_cube.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/irradiance.comp", {}).text);
-    return fmt::format("v6-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
+    return fmt::format("v7-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
                        kIrradianceSourceWidth, uint32_t(shaders ^ (shaders >> 32)));
 }
 
@@ -109,11 +110,12 @@ int groups(int size)
 
 // Cache files: magic, then per texture (levels, faces, size, RGBA16F texels level by level),
 // then optional extra floats. Written to a temporary file and renamed: never half a cache.
-void writeTextures(std::ostream& out, const gl::Texture& texture)
+// From `firstLevel` on (the levels before it are the reader's to make: readTexture's levelZero).
+void writeTextures(std::ostream& out, const gl::Texture& texture, int firstLevel = 0)
 {
     const int32_t header[3] = {texture.levels(), texture.desc().type == gl::TextureType::Cube ? 6 : 1, texture.width()};
     out.write(reinterpret_cast<const char*>(header), sizeof header);
-    for (int level = 0; level < texture.levels(); ++level) {
+    for (int level = firstLevel; level < texture.levels(); ++level) {
         const size_t count = size_t(texture.width(level)) * size_t(texture.height(level)) * size_t(header[1]) * 4;
         std::vector<uint16_t> halfs(count);
         glGetTextureImage(texture.id(), level, GL_RGBA, GL_HALF_FLOAT, GLsizei(count * 2), halfs.data());
@@ -121,7 +123,16 @@ void writeTextures(std::ostream& out, const gl::Texture& texture)
     }
 }
 
-bool readTexture(std::ifstream& in, gl::Texture& texture, const std::string& label, gl::Format format, int channels)
+/// Level 0 of `texture` (a cube) from `cube`'s level 0, which is the same size: a GPU copy.
+void copyLevelZero(const gl::Texture& cube, gl::Texture& texture)
+{
+    glCopyImageSubData(cube.id(), GL_TEXTURE_CUBE_MAP, 0, 0, 0, 0, texture.id(), GL_TEXTURE_CUBE_MAP, 0, 0, 0, 0, cube.width(), cube.width(), 6);
+}
+
+/// `levelZero` (not null): the file holds levels 1.. and level 0 is copied from that cube
+/// (writeTextures with firstLevel 1).
+bool readTexture(std::ifstream& in, gl::Texture& texture, const std::string& label, gl::Format format, int channels,
+                 const gl::Texture* levelZero = nullptr)
 {
     int32_t header[3] = {};
     if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return false;
@@ -133,7 +144,12 @@ bool readTexture(std::ifstream& in, gl::Texture& texture, const std::string& lab
     desc.levels = header[0];
     desc.label = label;
     gl::Texture t(desc);
-    for (int level = 0; level < header[0]; ++level) {
+    if (levelZero) {
+        if (desc.type != gl::TextureType::Cube || !*levelZero || levelZero->width() != desc.width || levelZero->desc().format != format)
+            return false;
+        copyLevelZero(*levelZero, t);
+    }
+    for (int level = levelZero ? 1 : 0; level < header[0]; ++level) {
         const size_t texels = size_t(t.width(level)) * size_t(t.height(level));
         std::vector<uint16_t> halfs(texels * size_t(header[1]) * 4);
         if (!in.read(reinterpret_cast<char*>(halfs.data()), std::streamsize(halfs.size() * 2))) return false;
@@ -234,7 +250,7 @@ gl::Texture equirectSource(const EnvironmentMap& map)
 
 /// One dispatch of a bake: rows [y, y + rows) of faces [face, face + faces) of a level.
 struct BakeStep {
-    enum class Op { ToCube, Mipmaps, Prefilter };
+    enum class Op { ToCube, Mipmaps, CopyLevelZero, Prefilter };
     Op op = Op::ToCube;
     int slot = 0;            ///< 0: the map, 1: the residual (less the specular lobe's sources)
     int level = 0;           ///< Prefilter: the target's level
@@ -360,6 +376,15 @@ struct ImageBasedLighting::Impl {
                               .roughness = float(level) / float(std::max(s.prefilterLevels - 1, 1))};
                 const int size = job->prefiltered[size_t(slot)].width(level - first);
                 step.stage = fmt::format("{}prefilter {}²", prefix, size);
+                if (level == 0 && size == s.cubeSize) {
+                    // The mirror at the cube's own size is the cube: copied, and not stored twice
+                    // in the cache (finish, setEnvironment).
+                    step.op = BakeStep::Op::CopyLevelZero;
+                    step.reads = double(size) * size * 6;
+                    job->total += step.reads;
+                    job->steps.push_back(step);
+                    continue;
+                }
                 addBands(*job, step, size, step.roughness > 0.0f ? double(s.prefilterSamples) : 1.0, maxReads);
             }
         }
@@ -412,6 +437,9 @@ struct ImageBasedLighting::Impl {
             cube.generateMipmaps();
             job.source[slot].reset(); // this job reads the equirect no more
             break;
+        case BakeStep::Op::CopyLevelZero:
+            copyLevelZero(cube, job.prefiltered[slot]);
+            break;
         case BakeStep::Op::Prefilter: {
             gl::Program& p = program(prefilter, "ibl/prefilter.comp");
             state.useProgram(p);
@@ -463,7 +491,10 @@ struct ImageBasedLighting::Impl {
         if (cacheFile.empty()) return;
         const auto write = [&](std::ostream& out) {
             writeTextures(out, cube);
-            writeTextures(out, prefiltered);
+            // The chain's level 0 is the cube's when they are the same size (the bake copies it).
+            const int32_t levelZeroFromCube = prefiltered.width() == cube.width() ? 1 : 0;
+            out.write(reinterpret_cast<const char*>(&levelZeroFromCube), sizeof levelZeroFromCube);
+            writeTextures(out, prefiltered, levelZeroFromCube);
             writeTextures(out, irradiance);
             out.write(reinterpret_cast<const char*>(sh.data()), sizeof(Sh9));
             writeBright(out, bright);
@@ -593,8 +624,11 @@ BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const Environmen
     if (!cacheDirectory.empty()) {
         report.cacheFile = cacheDirectory / fmt::format("env-{}-{}.bin", map.key, settings.key());
         std::ifstream in(report.cacheFile, std::ios::binary);
+        int32_t levelZeroFromCube = -1;
         if (in && checkMagic(in) && readTexture(in, r.cube, "environment cube", gl::Format::RGBA16F, 4) &&
-            readTexture(in, r.prefiltered, "prefiltered environment", gl::Format::RGBA16F, 4) &&
+            in.read(reinterpret_cast<char*>(&levelZeroFromCube), sizeof levelZeroFromCube) &&
+            (levelZeroFromCube == 0 || levelZeroFromCube == 1) &&
+            readTexture(in, r.prefiltered, "prefiltered environment", gl::Format::RGBA16F, 4, levelZeroFromCube ? &r.cube : nullptr) &&
             readTexture(in, r.irradiance, "irradiance", gl::Format::RGBA16F, 4) &&
             in.read(reinterpret_cast<char*>(r.sh.data()), sizeof(Sh9)) && readBright(in, r.bright) && r.readResidual(in)) {
             r.has = true;
