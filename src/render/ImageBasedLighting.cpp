@@ -41,6 +41,7 @@ std::string BakeSettings::key() const
     // irradiance cube can hold folded into it; v6: each source's spread; v7: the prefiltered
     // chain's level 0 not stored when it is the cube's).
     const uint64_t shaders = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/equirect_to_cube.comp", {}).text +
+                                     gl::loadShaderSource(gl::shaderRoot(), "ibl/downsample.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/irradiance.comp", {}).text);
     return fmt::format("v7-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
@@ -288,7 +289,7 @@ ResolvedShading dfgVariant(const ResolvedShading& shading)
 }
 
 struct ImageBasedLighting::Impl {
-    gl::Program toCube, prefilter, irradianceProgram;
+    gl::Program toCube, downsample, prefilter, irradianceProgram;
     gl::Texture cube, prefiltered, irradiance;
     // With brightSourcesSpecular: the cube less the bright sources, and the prefiltered chain's
     // levels from kResidualFirstLevel on made from it.
@@ -434,7 +435,19 @@ struct ImageBasedLighting::Impl {
             break;
         }
         case BakeStep::Op::Mipmaps:
-            cube.generateMipmaps();
+            if ((cube.width() & (cube.width() - 1)) == 0) {
+                // Power-of-two faces: 2 x 2 box means, level by level (ibl/downsample.comp).
+                gl::Program& p = program(downsample, "ibl/downsample.comp");
+                state.useProgram(p);
+                for (int level = 1; level < cube.levels(); ++level) {
+                    state.memoryBarrier(gl::Barrier::Image);
+                    state.bindImage(0, cube, level - 1, gl::ImageAccess::ReadOnly, /*layered*/ true);
+                    state.bindImage(1, cube, level, gl::ImageAccess::WriteOnly, /*layered*/ true);
+                    state.dispatchCompute(uint32_t(groups(cube.width(level))), uint32_t(groups(cube.width(level))), 6);
+                }
+            } else {
+                cube.generateMipmaps();
+            }
             job.source[slot].reset(); // this job reads the equirect no more
             break;
         case BakeStep::Op::CopyLevelZero:

@@ -829,3 +829,47 @@ TEST_F(GlTest, ProgressiveBakeEndsWithTheBakeAtOnce)
     same(reread.prefiltered(), now.prefiltered(), "prefiltered from the cache");
     fs::remove_all(cache);
 }
+
+// The bake's cube mips (ibl/downsample.comp, in place of glGenerateMipmap): each texel of level
+// L is the mean of the 2 × 2 texels of level L − 1 under it, on every face and level of
+// venice_1k's 512² cube. Expected: that mean computed on the CPU from the level above as read
+// back, within half-float rounding (relative 1e-3). Fails with the mips left empty or taken
+// from the wrong texels.
+TEST_F(GlTest, BakedCubeMipsAreBoxMeansOfTheLevelAbove)
+{
+    const render::EnvironmentMap map = render::loadEnvironmentMap(std::string(SPECULA_ASSETS_DIR) + "/env/venice_1k.hdr");
+    render::BakeSettings settings;
+    settings.prefilterSamples = 16; // the chain is not what this test reads
+    gl::State state;
+    render::ImageBasedLighting ibl;
+    ibl.setEnvironment(state, map, settings);
+    const gl::Texture& cube = ibl.cube();
+    ASSERT_EQ(cube.width(), 512);
+    ASSERT_EQ(cube.levels(), 10);
+    std::vector<float> above = cube.readFloat(0);
+    for (int level = 1; level < cube.levels(); ++level) {
+        SCOPED_TRACE("level " + std::to_string(level));
+        const std::vector<float> got = cube.readFloat(level);
+        const size_t size = size_t(cube.width(level)), from = size * 2;
+        ASSERT_EQ(got.size(), 6 * size * size * 4);
+        size_t wrong = 0;
+        double largest = 0.0;
+        std::string first;
+        for (size_t face = 0; face < 6; ++face)
+            for (size_t y = 0; y < size; ++y)
+                for (size_t x = 0; x < size; ++x)
+                    for (size_t c = 0; c < 3; ++c) {
+                        const auto at = [&](size_t n, size_t fx, size_t fy) { return ((face * n + fy) * n + fx) * 4 + c; };
+                        const double want = 0.25 * (double(above[at(from, 2 * x, 2 * y)]) + above[at(from, 2 * x + 1, 2 * y)] +
+                                                    above[at(from, 2 * x, 2 * y + 1)] + above[at(from, 2 * x + 1, 2 * y + 1)]);
+                        const double value = got[at(size, x, y)];
+                        largest = std::max(largest, want);
+                        if (std::abs(value - want) > 1e-3 * std::abs(want) + 1e-6 && wrong++ == 0)
+                            first = "face " + std::to_string(face) + " (" + std::to_string(x) + ", " + std::to_string(y) + "): " +
+                                    std::to_string(value) + " vs " + std::to_string(want);
+                    }
+        EXPECT_EQ(wrong, 0u) << first;
+        EXPECT_GT(largest, 0.0);
+        above = got;
+    }
+}
