@@ -296,7 +296,7 @@ struct ImageBasedLighting::Impl {
     gl::Texture residualCube, residualPrefiltered;
     int specularSources = 0; // the first this many bright sources; 0: none
     int analysedSpecularSources = 0; // what analyse found: specularSources once a bake has a residual
-    /// The full bake still running after a preview (BakeMode::Progressive), and its cache file.
+    /// The full bake still running after a preview (BakeMode::Progressive).
     std::unique_ptr<BakeJob> pending;
     std::thread cacheWriter; ///< writing a progressive bake's cache file
     /// DFG tables by dfgKey of their variant, made on first use; the compute program is
@@ -338,10 +338,10 @@ struct ImageBasedLighting::Impl {
         return withoutBrightSources(map, split, analysedSpecularSources);
     }
 
-    /// A bake's GPU work on the map (and its residual, sources[1] when not null): the cubes, then their prefiltered
-    /// chains, as steps run in order (runStep). maxReads 0: one step per level, the bake at
-    /// once; else steps of a band of rows of one face, each about that many texture reads, for
-    /// a bake spread over frames.
+    /// A bake's GPU work on the map (and on its residual, sources[1], when not null): the cubes,
+    /// then their prefiltered chains, as steps run in order (runStep). maxReads 0: one step per
+    /// level, the bake at once; else steps of a band of rows of one face, each about that many
+    /// texture reads, for a bake spread over frames.
     std::unique_ptr<BakeJob> makeJob(const std::array<std::shared_ptr<const gl::Texture>, 2>& sources, const BakeSettings& s,
                                      double maxReads)
     {
