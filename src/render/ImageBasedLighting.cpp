@@ -448,7 +448,8 @@ struct ImageBasedLighting::Impl {
             } else {
                 cube.generateMipmaps();
             }
-            job.source[slot].reset(); // this job reads the equirect no more
+            // The equirect stays until the job ends: a viewer's GL objects then do not depend
+            // on how far a bake has come (CliViewer.LoadingAModelAndAnEnvironmentAgain…).
             break;
         case BakeStep::Op::CopyLevelZero:
             copyLevelZero(cube, job.prefiltered[slot]);
