@@ -82,9 +82,7 @@ void Viewer::loadScene(const std::string& name)
         mSettings = settings;
         if (environment) {
             Stopwatch bake;
-            mBake.pending = mRenderer->setEnvironment(*environment, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions),
-                                                      render::BakeMode::Progressive)
-                                .progressive;
+            setEnvironment(*mRenderer, *environment);
             mStartup.environmentBake = bake.elapsedMs();
             mEnvironmentName = mOptions.env.value_or(document.environment.file.empty() ? "sky" : document.environment.file);
         }
@@ -103,9 +101,7 @@ void Viewer::loadEnvironment(const std::string& file)
 {
     render::EnvironmentMap map = file == "sky" ? render::proceduralSky() : render::loadEnvironmentMap(file);
     Stopwatch bake;
-    mBake.pending =
-        mRenderer->setEnvironment(map, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions), render::BakeMode::Progressive)
-            .progressive;
+    setEnvironment(*mRenderer, map);
     log::info("environment {} ready in {:.0f} ms", file, bake.elapsedMs());
     mEnvironment = std::move(map);
     mEnvironmentName = file;
@@ -214,6 +210,13 @@ void Viewer::renderFrame(float deltaSeconds)
     frameTimes.back() = deltaSeconds * 1000.0f;
 }
 
+void Viewer::setEnvironment(render::Renderer& renderer, const render::EnvironmentMap& map)
+{
+    const render::BakeReport report =
+        renderer.setEnvironment(map, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions), render::BakeMode::Progressive);
+    mBake = render::BakeProgress{.pending = report.progressive, .fraction = report.progressive ? 0.0 : 1.0};
+}
+
 void Viewer::advanceEnvironmentBake()
 {
     // At most 100 ms: a frame that compiled programs (the first) is no measure of the next.
@@ -273,6 +276,7 @@ bool Viewer::reloadShaders()
     // A fresh renderer compiles every program from the files; the old one keeps running until
     // the new one has compiled all it needs, so a compile error leaves the last good programs.
     const int errorsBefore = mDebug ? mDebug->errorCount() : 0;
+    const render::BakeProgress bakeBefore = mBake; // the old renderer's, kept if this fails
     try {
         auto fresh = std::make_unique<render::Renderer>();
         fresh->setCacheDirectory(setup::cacheDirectory(mOptions));
@@ -289,10 +293,7 @@ bool Viewer::reloadShaders()
                 fresh->setMaterialParameter(i, parameter, mRenderer->materialParameter(i, parameter));
             }
         }
-        if (mEnvironment)
-            mBake.pending = fresh->setEnvironment(*mEnvironment, setup::resolveBakeSettings(mOptions), setup::cacheDirectory(mOptions),
-                                                  render::BakeMode::Progressive)
-                                .progressive;
+        if (mEnvironment) setEnvironment(*fresh, *mEnvironment);
         fresh->prepare(mSettings);
         mRenderer = std::move(fresh);
         lastError.clear();
@@ -302,6 +303,7 @@ bool Viewer::reloadShaders()
     } catch (const std::exception& e) {
         lastError = e.what();
         log::warn("shader reload failed, keeping the last good programs: {}", lastError);
+        mBake = bakeBefore;
         // The driver reports a compile error as a GL error too; any other is a bug and stays.
         if (mDebug && dynamic_cast<const gl::ShaderError*>(&e)) mDebug->discardAfter(errorsBefore);
         mRenderer->invalidateGlState();

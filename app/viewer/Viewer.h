@@ -155,6 +155,9 @@ public:
 
 private:
     void uploadScene();
+    /// `map` on `renderer` with --bake-preset and the bake cache; without a cache entry, a
+    /// progressive bake (advanceEnvironmentBake).
+    void setEnvironment(render::Renderer& renderer, const render::EnvironmentMap& map);
     /// Moves the timeline on by `deltaSeconds` when playing, and poses the scene when its
     /// animation or time changed since the last pose.
     void advanceTimeline(float deltaSeconds);

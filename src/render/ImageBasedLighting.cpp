@@ -368,7 +368,7 @@ struct ImageBasedLighting::Impl {
             const std::string prefix = slot == 0 ? "" : "residual ";
             BakeStep toCube{.op = BakeStep::Op::ToCube, .slot = slot, .stage = prefix + "cube"};
             addBands(*job, toCube, s.cubeSize, 1.0, maxReads);
-            // The box-filtered mips: a bake's own step (glGenerateTextureMipmap is one call).
+            // The box-filtered mips: one step (every level, ibl/downsample.comp).
             job->steps.push_back({.op = BakeStep::Op::Mipmaps, .slot = slot, .reads = double(s.cubeSize) * s.cubeSize * 6 * 0.5,
                                   .stage = prefix + "cube"});
             job->total += job->steps.back().reads;
