@@ -48,15 +48,18 @@ float brightSourceWeight(float perceptualRoughness)
 }
 
 // The split sum's prefiltered radiance of the map less the sources, and in `weight` how much
-// of the lobe that is: levels below IBL_RESIDUAL_FIRST_LEVEL are the whole map's (as
-// prefilteredRadiance: a narrow lobe sees the sources' shapes), those from it on the rest's;
-// in between the two mix as the chain's own levels would. The caller adds weight × the
-// sources (brightSourcesSpecular).
+// of the lobe that is: as importance sampling's (brightSourceWeight), the whole map's chain
+// below roughness 0.15 (a narrow lobe sees the sources' shapes), the residual chain from 0.25;
+// between, the two mix. The residual chain starts at IBL_RESIDUAL_FIRST_LEVEL (1, roughness
+// 1/7 with 8 levels), so that from 0.15 on the whole map's levels, which hold the sources, no
+// longer mix in: with the residual from level 2 on, roughness 0.25 read a quarter of its light
+// from the whole map's level 1-2 mix, whose softboxes were three times too bright at their
+// centres (docs/ibl.md). The caller adds weight × the sources (brightSourcesSpecular).
 vec3 prefilteredRadianceLessSources(vec3 r, float perceptualRoughness, out float weight)
 {
     float lod = perceptualRoughness * (environment.params.y - 1.0);
     vec3 d = toEnvironment(r);
-    weight = saturate(lod - float(IBL_RESIDUAL_FIRST_LEVEL - 1));
+    weight = brightSourceWeight(perceptualRoughness);
     vec3 radiance = vec3(0.0);
     if (weight < 1.0) radiance += (1.0 - weight) * textureLod(uPrefiltered, d, lod).rgb;
     if (weight > 0.0) radiance += weight * textureLod(uResidualPrefiltered, d, max(lod - float(IBL_RESIDUAL_FIRST_LEVEL), 0.0)).rgb;

@@ -39,12 +39,12 @@ std::string BakeSettings::key() const
     // changes (v2: the irradiance cube; v3: the bright sources' residual cube and prefiltered
     // levels; v4: with the count of the sources the specular lobe takes; v5: the bright sources the
     // irradiance cube can hold folded into it; v6: each source's spread; v7: the prefiltered
-    // chain's level 0 not stored when it is the cube's).
+    // chain's level 0 not stored when it is the cube's; v8: the residual chain from level 1).
     const uint64_t shaders = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/equirect_to_cube.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/downsample.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/irradiance.comp", {}).text);
-    return fmt::format("v7-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
+    return fmt::format("v8-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
                        kIrradianceSourceWidth, uint32_t(shaders ^ (shaders >> 32)));
 }
 

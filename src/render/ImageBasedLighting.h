@@ -70,7 +70,7 @@ public:
     /// brightSourcesSpecular(). Below that level the split sum reads the whole map's chain.
     const gl::Texture& residualCube() const;
     const gl::Texture& residualPrefiltered() const;
-    static constexpr int kResidualFirstLevel = 2;
+    static constexpr int kResidualFirstLevel = 1;
     /// The split-sum DFG table of dfgVariant(shading): baked on first use by
     /// shaders/ibl/dfg.comp compiled with the variant's defines (the forward pass's), and
     /// cached on disk (setLutCacheDirectory) under a name that holds the variant, the table

@@ -21,6 +21,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -188,6 +189,28 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
                     return error;
                 };
                 const bool importance = mode == render::IblSpecular::Importance;
+                if (std::getenv("SPECULA_IBL_REFERENCE_BANDS")) {
+                    // Where on the sphere the error is: by bands of n·v, |error| and signed bias.
+                    std::string bands = row;
+                    for (int s = 0; s < kSpheres; ++s) {
+                        bands += " ";
+                        for (const auto& [lo, hi] : {std::pair{0.8, 1.01}, std::pair{0.4, 0.8}, std::pair{0.0, 0.4}}) {
+                            double sumAbs = 0.0, sumSigned = 0.0, sumReference = 0.0;
+                            for (size_t i = 0; i < pixels.size(); ++i) {
+                                const double NoV = glm::dot(pixels[i].n, viewVector(s, kSpheres, pixels[i].n));
+                                if (NoV < lo || NoV >= hi) continue;
+                                const glm::dvec3& ref = reference[size_t(s) * pixels.size() + i];
+                                const glm::dvec3 got(pixel(r.image, s * kSize + pixels[i].x, pixels[i].y));
+                                sumAbs += glm::dot(glm::abs(got - ref), glm::dvec3(1.0));
+                                sumSigned += glm::dot(got - ref, glm::dvec3(1.0));
+                                sumReference += glm::dot(ref, glm::dvec3(1.0));
+                            }
+                            bands += fmt::format("{:.1f}/{:+.1f} ", 100.0 * sumAbs / sumReference, 100.0 * sumSigned / sumReference);
+                        }
+                        bands += "|";
+                    }
+                    std::printf("bands n.v >= 0.8, 0.4-0.8, < 0.4 (%% |error| / %% bias): %s\n", bands.c_str());
+                }
                 for (int s = 0; s < kSpheres; ++s) {
                     const SphereError error = sphereError(reference, s);
                     const float roughness = kRoughnesses[s];
@@ -212,8 +235,12 @@ TEST_F(GlTest, ImageBasedLightMatchesAMonteCarloReference)
                     // The smooth dielectric's diffuse coupling (docs/ibl.md): 1 - E(n.v), not the
                     // glTF BRDF's per-direction 1 - F(v.h), which reflects more than it receives
                     // near grazing: 3.7-7.8 % in both modes.
+                    // The split sum at roughness 0.25: 5.9-7.8 % since the residual chain starts
+                    // at level 1 (studio's copper 14.9 % before, when a quarter of the lobe read
+                    // the whole map's level 1-2 mix with its softboxes).
                     const double bound = roughness == 0.0f ? (metal ? 0.02 : 0.09)
                                          : importance     ? (metal ? 0.03 : 0.07)
+                                         : roughness == 0.25f ? 0.10
                                                           : 0.16;
                     row += fmt::format(" {:.2f} % |", 100.0 * error.relative());
                     results.push_back({std::string(mapName) + (metal ? " copper" : " dielectric") + " roughness " +
