@@ -97,8 +97,11 @@ struct ForwardPass::Impl {
     // (ibl/ibl.glsl's IBL_SOURCE_*): the programs are made again when they change.
     std::vector<IrradianceSource> sources;
     int specularSources = 0; // IBL_SOURCE_SPECULAR_COUNT: the specular lobe takes the first as lights too
-    std::vector<std::string> sourceDefines{"IBL_SOURCE_COUNT 0"};
+    bool unrotated = true;   // IBL_UNROTATED: the map is not turned (SkyboxPass::unrotated)
+    std::vector<std::string> sourceDefines{"IBL_SOURCE_COUNT 0", "IBL_UNROTATED"};
 
+    // The environment's constants of the forward programs: its bright sources and whether it
+    // is turned. The programs are made again when they change.
     void updateSources(const FrameContext& frame)
     {
         static const std::vector<IrradianceSource> none;
@@ -108,10 +111,13 @@ struct ForwardPass::Impl {
             return a.direction == b.direction && a.flux == b.flux;
         });
         const int specular = frame.stores.ibl.hasEnvironment() ? std::min(frame.stores.ibl.specularSourceCount(), int(count)) : 0;
-        if (same && specular == specularSources) return;
+        const bool notTurned = SkyboxPass::unrotated(frame);
+        if (same && specular == specularSources && notTurned == unrotated) return;
         sources.assign(all.begin(), all.begin() + std::ptrdiff_t(count));
         specularSources = specular;
+        unrotated = notTurned;
         sourceDefines = irradianceSourceDefines(sources);
+        if (unrotated) sourceDefines.push_back("IBL_UNROTATED");
         if (specularSources > 0) {
             sourceDefines.push_back("IBL_SOURCE_SPECULAR");
             sourceDefines.push_back(fmt::format("IBL_SOURCE_SPECULAR_COUNT {}", specularSources));

@@ -1,6 +1,7 @@
 #include "render/passes/SkyboxPass.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -14,15 +15,24 @@ bool SkyboxPass::blurred(const FrameContext& frame)
     return std::clamp(frame.settings.environment.skyboxBlur, 0.0f, 1.0f) > 0.0f;
 }
 
+bool SkyboxPass::unrotated(const FrameContext& frame)
+{
+    return std::fmod(frame.settings.environment.rotationDegrees, 360.0f) == 0.0f;
+}
+
 gl::Program& SkyboxPass::program(const FrameContext& frame)
 {
-    // Two programs, not a branch on the uniform: gallivm (llvmpipe) would read both cubes.
-    const bool blurred = SkyboxPass::blurred(frame);
-    gl::Program& program = mPrograms[blurred ? 1 : 0];
-    if (!program)
-        program = gl::Program({.vertex = "ibl/skybox.vert", .fragment = "ibl/skybox.frag",
-                               .defines = blurred ? std::vector<std::string>{"SKYBOX_BLURRED"} : std::vector<std::string>{},
-                               .label = blurred ? "skybox (blurred)" : "skybox"});
+    // Programs, not branches on uniforms: gallivm (llvmpipe) would read both cubes, and the
+    // rotation's matrix in every pixel of an unturned map.
+    const bool blurred = SkyboxPass::blurred(frame), turned = !unrotated(frame);
+    gl::Program& program = mPrograms[(blurred ? 1 : 0) + (turned ? 2 : 0)];
+    if (!program) {
+        std::vector<std::string> defines;
+        if (blurred) defines.push_back("SKYBOX_BLURRED");
+        if (!turned) defines.push_back("IBL_UNROTATED");
+        program = gl::Program({.vertex = "ibl/skybox.vert", .fragment = "ibl/skybox.frag", .defines = defines,
+                               .label = std::string(blurred ? "skybox (blurred)" : "skybox") + (turned ? " turned" : "")});
+    }
     return program;
 }
 
