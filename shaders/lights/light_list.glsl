@@ -142,6 +142,13 @@ GpuLight lightAt(uint index)
 {
 #ifdef SPECULA_LIGHTS_STORAGE
     return lightData.lights[index];
+#elif defined(LIGHT_CONSTANTS)
+    // The lights as constants of the program (LIGHT_VALUES: the light buffer's records, written by
+    // render/passes/ForwardPass while the lights stay still): with LIGHT_COUNT's unrolled loop
+    // every field folds into the code, where four texel fetches a light a pixel were (on llvmpipe
+    // learnopengl's forward pass 28-29 -> 25-26 ms, docs/performance.md).
+    const GpuLight values[LIGHT_COUNT] = GpuLight[](LIGHT_VALUES);
+    return values[index];
 #else
     int texel = 1 + 4 * int(index);
     return GpuLight(uintBitsToFloat(texelFetch(lightTexels, texel)), uintBitsToFloat(texelFetch(lightTexels, texel + 1)),

@@ -167,6 +167,10 @@ struct FrameStats {
     /// Bytes of the environment's uniform block uploaded for the frame: only the fields that
     /// changed (the view when the camera moves, the SH when the environment does).
     size_t environmentBytesUploaded = 0;
+    /// The forward programs held the frame's lights as constants (LIGHT_CONSTANTS: a few lights,
+    /// every one evaluated everywhere, no shadow maps, and no edit in the last frames), not
+    /// read from the light buffer (render/passes/ForwardPass).
+    bool lightConstants = false;
     std::vector<PassTiming> passes;
     /// Textures the frame graph's pool holds after the frame (its targets, and those of passes
     /// switched off until they have been idle for two frames).

@@ -27,9 +27,9 @@ constexpr uint64_t kBlendTransparent = uint64_t(1) << 39, kTransmission = uint64
 constexpr uint64_t kClearcoat = uint64_t(1) << 42;
 constexpr uint64_t kSheen = uint64_t(1) << 43, kAnisotropy = uint64_t(1) << 44, kIridescence = uint64_t(1) << 45;
 constexpr uint64_t kDispersion = uint64_t(1) << 46;
-// The kinds of light a frame has not; bit 19 is free (the debug view's field was there while it
-// had 4 bits).
-constexpr uint64_t kNoDirectional = 1u << 16, kNoPoint = 1u << 17, kNoSpot = 1u << 18;
+// The kinds of light a frame has not; then LIGHT_CONSTANTS (bit 19: the debug view's field was
+// there while it had 4 bits).
+constexpr uint64_t kNoDirectional = 1u << 16, kNoPoint = 1u << 17, kNoSpot = 1u << 18, kLightConstants = 1u << 19;
 // LIGHT_COUNT: 0 = none (the count is read from the light buffer), else the count + 1.
 constexpr int kLightCountShift = 52, kLightCountBits = 5;
 static_assert(LightVariant::kMaxConstantCount + 1 < (1 << kLightCountBits));
@@ -182,7 +182,10 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
     if (doomIndexed) key |= kDoomIndexed;
     if (lights.all) {
         key |= kLightsAll;
-        if (lights.count >= 0 && lights.count <= LightVariant::kMaxConstantCount) key |= uint64_t(lights.count + 1) << kLightCountShift;
+        if (lights.count >= 0 && lights.count <= LightVariant::kMaxConstantCount) {
+            key |= uint64_t(lights.count + 1) << kLightCountShift;
+            if (lights.constants && lights.count > 0) key |= kLightConstants;
+        }
     }
     if (!lights.directional) key |= kNoDirectional;
     if (!lights.point) key |= kNoPoint;
@@ -227,7 +230,13 @@ std::vector<std::string> ForwardVariant::defines() const
     for (const VariantDefine& row : kTable)
         if ((key & row.mask) == row.value) out.emplace_back(row.define);
     if (const uint64_t count = (key & kLightCountMask) >> kLightCountShift; count > 0) out.push_back(fmt::format("LIGHT_COUNT {}u", count - 1));
+    if (lightConstants()) out.emplace_back("LIGHT_CONSTANTS");
     return out;
+}
+
+bool ForwardVariant::lightConstants() const
+{
+    return (key & kLightConstants) != 0;
 }
 
 std::string ForwardVariant::name() const

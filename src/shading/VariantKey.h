@@ -45,6 +45,10 @@ struct ShadowVariant {
 struct LightVariant {
     bool all = false; ///< LIGHTS_ALL
     int count = -1;   ///< with `all`: the frame's light count when at most kMaxConstantCount, else -1
+    /// With a count of at least one: the lights themselves are constants of the program
+    /// (LIGHT_CONSTANTS, their values in LIGHT_VALUES, written by render/passes/ForwardPass
+    /// while the lights stay still), not texels read per pixel.
+    bool constants = false;
     bool directional = true, point = true, spot = true;
     static constexpr int kMaxConstantCount = 16;
     bool operator==(const LightVariant&) const = default;
@@ -66,6 +70,9 @@ std::vector<std::string> irradianceSourceDefines(std::span<const IrradianceSourc
 
 struct ForwardVariant {
     uint64_t key = 0;
+
+    /// The program reads its lights from LIGHT_VALUES (LightVariant::constants).
+    bool lightConstants() const;
 
     /// `features`: SPECULA_MATERIAL_* bits (the shading bits above them are ignored: pass the
     /// resolved shading). A model other than the physically based one has no BRDF choices, so

@@ -57,7 +57,7 @@ struct Result {
 constexpr double kRelative = 0.015;
 constexpr double kAbsolute = 2e-3;
 
-Result renderAndCompare(const Case& c)
+scene::Scene caseScene(const Case& c)
 {
     scene::Scene s;
     scene::Material material;
@@ -70,7 +70,11 @@ Result renderAndCompare(const Case& c)
     std::vector<Case::Placed> lights{{c.light, c.lightPosition, c.lightTarget}};
     lights.insert(lights.end(), c.more.begin(), c.more.end());
     for (const Case::Placed& l : lights) scene::addLight(s, l.light, l.position, l.target - l.position);
+    return s;
+}
 
+render::FrameSettings caseSettings(const Case& c)
+{
     render::FrameSettings settings;
     settings.width = settings.height = 96;
     settings.msaa = 1;
@@ -78,12 +82,28 @@ Result renderAndCompare(const Case& c)
     settings.brdfGeometry = c.geometry;
     settings.energyCompensation = false; // exactly the glTF BRDF, as shading/Brdf.cpp evaluates it
     settings.lightCulling = c.culling;
-    const glm::vec3 eye(0.0f, 0.0f, 4.0f);
-    const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
-    render::Renderer renderer;
-    renderer.setScene(s);
-    renderer.render(view, settings);
+    return settings;
+}
+
+const glm::vec3 kEye(0.0f, 0.0f, 4.0f);
+const render::View kView = render::lookAtView(kEye, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
+
+// Renders the case's frame, in its own renderer or in `existing` (whose scene and lights the
+// caller has set to the case's), and compares every pixel with the CPU.
+Result renderAndCompare(const Case& c, render::Renderer* existing = nullptr)
+{
+    std::vector<Case::Placed> lights{{c.light, c.lightPosition, c.lightTarget}};
+    lights.insert(lights.end(), c.more.begin(), c.more.end());
+    std::optional<render::Renderer> own;
+    if (!existing) {
+        own.emplace();
+        own->setScene(caseScene(c));
+    }
+    render::Renderer& renderer = existing ? *existing : *own;
+    renderer.render(kView, caseSettings(c));
     const ImageFloat image = renderer.readRadiance();
+    const glm::vec3 eye = kEye;
+    const render::View view = kView;
 
     render::brdf::Surface surface;
     surface.baseColor = dvec3(c.baseColor);
@@ -225,6 +245,49 @@ TEST_F(GlTest, MixedLightKindsMatchCpuWithAndWithoutAConstantCount)
             EXPECT_GT(r.lit, 1000) << set.size() << " lights";
         }
     }
+}
+
+// A few lights evaluated everywhere, without shadow maps, are constants of the forward programs
+// while they stay still (LIGHT_CONSTANTS, render/passes/ForwardPass): from the first frame, not
+// in the frames after an edit (those read the light buffer: a dragged light must not compile a
+// program a frame), and again, with the edited values, once the lights have been still for
+// 16 frames. Each frame against the CPU's sum of its lights. Fails with the constants kept
+// after an edit (the frame shows the old lights), or never made again.
+TEST_F(GlTest, LightsAsConstantsFollowEveryEdit)
+{
+    scene::Light point, spot;
+    point.type = scene::Light::Type::Point;
+    point.intensity = 20.0f;
+    point.color = {1.0f, 0.8f, 0.6f};
+    spot.type = scene::Light::Type::Spot;
+    spot.intensity = 50.0f;
+    spot.color = {0.6f, 0.8f, 1.0f};
+    spot.range = 9.0f;
+    spot.innerConeAngle = glm::radians(10.0f);
+    spot.outerConeAngle = glm::radians(20.0f);
+    point.castShadows = spot.castShadows = false; // a frame with shadow maps reads its lights' records
+    Case c{"constant lights", point, {2.0f, 2.5f, 3.0f}, {0, 0, 0}, {0.7f, 0.6f, 0.5f}, 0.4f, 0.45f};
+    c.more = {{spot, {-1.0f, 3.0f, 2.5f}, {-0.3f, 0.2f, 0.0f}}};
+    c.culling = render::LightCulling::None;
+    render::Renderer renderer;
+    renderer.setScene(caseScene(c));
+    EXPECT_GT(renderAndCompare(c, &renderer).lit, 1000);
+    EXPECT_TRUE(renderer.stats().lightConstants);
+
+    // Move the point light and brighten it.
+    Case moved = c;
+    moved.lightPosition = {-2.5f, 1.0f, 3.0f};
+    moved.light.intensity = 35.0f;
+    render::PlacedLight placed = renderer.light(0);
+    placed.light.intensity = moved.light.intensity;
+    placed.position = moved.lightPosition;
+    placed.direction = glm::normalize(moved.lightTarget - moved.lightPosition);
+    renderer.setLight(0, placed);
+    EXPECT_GT(renderAndCompare(moved, &renderer).lit, 1000);
+    EXPECT_FALSE(renderer.stats().lightConstants);
+    for (int frame = 0; frame < 16; ++frame) renderer.render(kView, caseSettings(moved));
+    EXPECT_GT(renderAndCompare(moved, &renderer).lit, 1000);
+    EXPECT_TRUE(renderer.stats().lightConstants);
 }
 
 namespace {

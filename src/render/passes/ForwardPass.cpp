@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <string>
 #include <type_traits>
 
 #include "gl/Framebuffer.h"
@@ -98,6 +99,48 @@ struct ForwardPass::Impl {
     std::vector<IrradianceSource> sources;
     int specularSources = 0; // IBL_SOURCE_SPECULAR_COUNT: the specular lobe takes the first as lights too
     bool unrotated = true;   // IBL_UNROTATED: the map is not turned (SkyboxPass::unrotated)
+    // LIGHT_VALUES of the programs that hold the lights as constants (LightVariant::constants),
+    // and what decides when they may: the light buffer's revision last seen, whether it has
+    // changed since the first frame, and for how many frames it has not.
+    std::string lightValues;
+    uint64_t lightRevision = 0;
+    bool lightsSeen = false, lightsEdited = false;
+    int stillFrames = 0;
+    // Frames the lights must stay still after an edit before the programs take them as
+    // constants again: a light dragged in the viewer changes every frame, and each new set of
+    // constants is a compile.
+    static constexpr int kSettleFrames = 16;
+
+    // The lights as constants while they stay still: from the first frame (a render, a bench,
+    // a viewer before any edit), and again kSettleFrames after the last edit; meanwhile the
+    // programs that read the light buffer. Only for the constant-count programs of a frame
+    // without shadow maps (a record's shadow slot changes without an edit).
+    void updateLightConstants(const FrameContext& frame, const ShadowVariant& shadows)
+    {
+        const LightBuffer& buffer = frame.stores.lights;
+        if (!lightsSeen || buffer.revision() != lightRevision) {
+            lightsEdited = lightsSeen;
+            lightsSeen = true;
+            lightRevision = buffer.revision();
+            stillFrames = 0;
+        } else if (stillFrames < kSettleFrames) {
+            ++stillFrames;
+        }
+        lights.constants = lights.all && lights.count > 0 && !shadows.active() && (!lightsEdited || stillFrames >= kSettleFrames);
+        if (!lights.constants) return;
+        std::string values;
+        for (int i = 0; i < buffer.count(); ++i) {
+            const shared::GpuLight g = LightBuffer::pack(buffer.light(i), buffer.shadowSlot(i), buffer.cutoff());
+            // Nine significant digits give back every float exactly.
+            const auto v = [](const glm::vec4& x) { return fmt::format("vec4({:.9g}, {:.9g}, {:.9g}, {:.9g})", x.x, x.y, x.z, x.w); };
+            values += fmt::format("{}GpuLight({}, {}, {}, {})", values.empty() ? "" : ", ", v(g.positionRange), v(g.directionType),
+                                  v(g.colorIntensity), v(g.spot));
+        }
+        if (values == lightValues) return;
+        lightValues = std::move(values);
+        // The programs made with the old values; those that read the buffer stay.
+        std::erase_if(programs, [](const auto& entry) { return ForwardVariant{entry.first}.lightConstants(); });
+    }
     std::vector<std::string> sourceDefines{"IBL_SOURCE_COUNT 0", "IBL_UNROTATED"};
 
     // The environment's constants of the forward programs: its bright sources and whether it
@@ -178,6 +221,7 @@ struct ForwardPass::Impl {
         ForwardProgram p;
         std::vector<std::string> defines = variant.defines();
         defines.insert(defines.end(), sourceDefines.begin(), sourceDefines.end());
+        if (variant.lightConstants()) defines.push_back("LIGHT_VALUES " + lightValues);
         p.program = gl::Program({.vertex = "forward/pbr.vert", .fragment = "forward/pbr.frag", .defines = defines,
                                  .label = "forward " + variant.name()});
         p.model = p.program.uniformLocation("uModel");
@@ -211,6 +255,8 @@ const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext
     r.shadows = shadows;
     r.lights = lights;
     r.materialPrograms.clear();
+    r.updateLightConstants(frame, shadows);
+    frame.stats.lightConstants = r.lights.constants;
     r.updateSources(frame);
     r.skybox.prepare(frame);
     const GpuScene* scene = frame.stores.scene.get();
