@@ -99,6 +99,7 @@ struct ForwardPass::Impl {
     std::vector<IrradianceSource> sources;
     int specularSources = 0; // IBL_SOURCE_SPECULAR_COUNT: the specular lobe takes the first as lights too
     bool unrotated = true;   // IBL_UNROTATED: the map is not turned (SkyboxPass::unrotated)
+    std::vector<std::string> sourceDefines{"IBL_SOURCE_COUNT 0", "IBL_UNROTATED"};
     // LIGHT_VALUES of the programs that hold the lights as constants (LightVariant::constants),
     // and what decides when they may: the light buffer's revision last seen, whether it has
     // changed since the first frame, and for how many frames it has not.
@@ -141,7 +142,6 @@ struct ForwardPass::Impl {
         // The programs made with the old values; those that read the buffer stay.
         std::erase_if(programs, [](const auto& entry) { return ForwardVariant{entry.first}.lightConstants(); });
     }
-    std::vector<std::string> sourceDefines{"IBL_SOURCE_COUNT 0", "IBL_UNROTATED"};
 
     // The environment's constants of the forward programs: its bright sources and whether it
     // is turned. The programs are made again when they change.
