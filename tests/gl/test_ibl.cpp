@@ -685,6 +685,31 @@ TEST_F(GlTest, PrefilteredLevelsMatchAConvergedConvolution)
     }
 }
 
+namespace {
+
+// A smooth ramp of radiance, L(d) = exp(2 x + 1.5 y), that a cube's filter follows closely, and
+// an equirect map of it, `width` × width / 2, each texel L at its centre's direction.
+float rampRadiance(const glm::vec3& d)
+{
+    return std::exp(2.0f * d.x + 1.5f * d.y);
+}
+
+render::EnvironmentMap rampMap(int width, const std::string& key)
+{
+    render::EnvironmentMap map;
+    map.width = width;
+    map.height = width / 2;
+    map.key = key;
+    map.texels.resize(size_t(map.width) * size_t(map.height));
+    for (int y = 0; y < map.height; ++y)
+        for (int x = 0; x < map.width; ++x)
+            map.texels[size_t(y) * size_t(map.width) + size_t(x)] =
+                glm::vec3(rampRadiance(render::equirectToDirection({(x + 0.5f) / float(map.width), (y + 0.5f) / float(map.height)})));
+    return map;
+}
+
+} // namespace
+
 TEST_F(GlTest, SkyboxShowsTheMapAcrossCubeFaceEdges)
 {
     // The sharp sky against the radiance it stands for, in each pixel's direction, looking at
@@ -698,19 +723,10 @@ TEST_F(GlTest, SkyboxShowsTheMapAcrossCubeFaceEdges)
     // cube's edge pixels are 0.221 % off and this test fails. (Filtering a 256² or larger cube
     // within each face could not be seen here, 0.076 % at 512², and was tried as a saving on
     // llvmpipe: it saved nothing measurable, docs/performance.md.)
-    const auto ramp = [](const glm::vec3& d) { return glm::vec3(std::exp(2.0f * d.x + 1.5f * d.y)); };
+    const auto ramp = [](const glm::vec3& d) { return glm::vec3(rampRadiance(d)); };
     for (int width : {1024, 128}) {
-        render::EnvironmentMap map;
-        map.width = width;
-        map.height = width / 2;
-        map.key = "test-ramp-" + std::to_string(width);
-        map.texels.resize(size_t(map.width) * size_t(map.height));
-        for (int y = 0; y < map.height; ++y)
-            for (int x = 0; x < map.width; ++x)
-                map.texels[size_t(y) * size_t(map.width) + size_t(x)] =
-                    ramp(render::equirectToDirection({(x + 0.5f) / float(map.width), (y + 0.5f) / float(map.height)}));
         render::Renderer renderer;
-        renderer.setEnvironment(map);
+        renderer.setEnvironment(rampMap(width, "test-ramp-" + std::to_string(width)));
         renderer.setScene(scene::Scene{});
         const int size = 192;
         const render::View view =
@@ -760,18 +776,8 @@ TEST_F(GlTest, SkyboxShowsTheMapAcrossCubeFaceEdges)
 // mirror sphere's turned reflections: BrightPatchReflectsWhereTheConventionSays.
 TEST_F(GlTest, SkyFollowsTheEnvironmentsRotationBothWays)
 {
-    const auto ramp = [](const glm::vec3& d) { return std::exp(2.0f * d.x + 1.5f * d.y); };
-    render::EnvironmentMap map;
-    map.width = 128;
-    map.height = 64;
-    map.key = "test-ramp-turned";
-    map.texels.resize(size_t(map.width) * size_t(map.height));
-    for (int y = 0; y < map.height; ++y)
-        for (int x = 0; x < map.width; ++x)
-            map.texels[size_t(y) * size_t(map.width) + size_t(x)] =
-                glm::vec3(ramp(render::equirectToDirection({(x + 0.5f) / float(map.width), (y + 0.5f) / float(map.height)})));
     render::Renderer renderer;
-    renderer.setEnvironment(map);
+    renderer.setEnvironment(rampMap(128, "test-ramp-turned"));
     renderer.setScene(scene::Scene{});
     const int size = 64;
     const render::View view =
@@ -791,7 +797,7 @@ TEST_F(GlTest, SkyFollowsTheEnvironmentsRotationBothWays)
             for (int x = 0; x < size; ++x) {
                 const glm::vec4 ndc((x + 0.5f) / size * 2.0f - 1.0f, 1.0f - (y + 0.5f) / size * 2.0f, 1.0f, 1.0f);
                 const glm::vec4 far = inverse * ndc;
-                const double expected = ramp(worldToMap * glm::normalize(glm::vec3(far) / far.w));
+                const double expected = rampRadiance(worldToMap * glm::normalize(glm::vec3(far) / far.w));
                 sum += std::abs(double(pixel(image, x, y).x) - expected) / expected;
             }
         const double error = sum / double(size * size);

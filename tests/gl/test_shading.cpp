@@ -211,24 +211,39 @@ TEST_F(GlTest, DirectionalLitSphereMatchesCpu)
     renderAndCompare(c);
 }
 
+namespace {
+
+// One light of each kind, for the frames that mix them.
+struct MixedLights {
+    scene::Light point, spot, sun;
+};
+
+MixedLights mixedLights()
+{
+    MixedLights m;
+    m.point.type = scene::Light::Type::Point;
+    m.point.intensity = 20.0f;
+    m.point.color = {1.0f, 0.8f, 0.6f};
+    m.spot.type = scene::Light::Type::Spot;
+    m.spot.intensity = 50.0f;
+    m.spot.color = {0.6f, 0.8f, 1.0f};
+    m.spot.range = 9.0f;
+    m.spot.innerConeAngle = glm::radians(10.0f);
+    m.spot.outerConeAngle = glm::radians(20.0f);
+    m.sun.type = scene::Light::Type::Directional;
+    m.sun.intensity = 1.5f;
+    return m;
+}
+
+} // namespace
+
 // Every kind of light in one frame, and each pair of kinds: the forward programs compile in only
 // the kinds a frame has (NO_*_LIGHTS) and, with every light evaluated everywhere, their count
 // as a constant (LIGHT_COUNT). Each frame against the CPU's sum of its lights, clustered (the
 // count read from the buffer) and brute force (the count a constant).
 TEST_F(GlTest, MixedLightKindsMatchCpuWithAndWithoutAConstantCount)
 {
-    scene::Light point, spot, sun;
-    point.type = scene::Light::Type::Point;
-    point.intensity = 20.0f;
-    point.color = {1.0f, 0.8f, 0.6f};
-    spot.type = scene::Light::Type::Spot;
-    spot.intensity = 50.0f;
-    spot.color = {0.6f, 0.8f, 1.0f};
-    spot.range = 9.0f;
-    spot.innerConeAngle = glm::radians(10.0f);
-    spot.outerConeAngle = glm::radians(20.0f);
-    sun.type = scene::Light::Type::Directional;
-    sun.intensity = 1.5f;
+    const auto [point, spot, sun] = mixedLights();
     const Case::Placed placedPoint{point, {2.0f, 2.5f, 3.0f}, {0, 0, 0}};
     const Case::Placed placedSpot{spot, {-1.0f, 3.0f, 2.5f}, {-0.3f, 0.2f, 0.0f}};
     const Case::Placed placedSun{sun, {0, 0, 0}, {1.0f, -0.5f, -1.0f}};
@@ -255,16 +270,7 @@ TEST_F(GlTest, MixedLightKindsMatchCpuWithAndWithoutAConstantCount)
 // after an edit (the frame shows the old lights), or never made again.
 TEST_F(GlTest, LightsAsConstantsFollowEveryEdit)
 {
-    scene::Light point, spot;
-    point.type = scene::Light::Type::Point;
-    point.intensity = 20.0f;
-    point.color = {1.0f, 0.8f, 0.6f};
-    spot.type = scene::Light::Type::Spot;
-    spot.intensity = 50.0f;
-    spot.color = {0.6f, 0.8f, 1.0f};
-    spot.range = 9.0f;
-    spot.innerConeAngle = glm::radians(10.0f);
-    spot.outerConeAngle = glm::radians(20.0f);
+    auto [point, spot, sun] = mixedLights();
     point.castShadows = spot.castShadows = false; // a frame with shadow maps reads its lights' records
     Case c{"constant lights", point, {2.0f, 2.5f, 3.0f}, {0, 0, 0}, {0.7f, 0.6f, 0.5f}, 0.4f, 0.45f};
     c.more = {{spot, {-1.0f, 3.0f, 2.5f}, {-0.3f, 0.2f, 0.0f}}};
