@@ -53,7 +53,7 @@ float brightSourceWeight(float perceptualRoughness)
 // between, the two mix. The residual chain starts at IBL_RESIDUAL_FIRST_LEVEL (1, roughness
 // 1/7 with 8 levels), so that from 0.15 on the whole map's levels, which hold the sources, no
 // longer mix in: with the residual from level 2 on, roughness 0.25 read a quarter of its light
-// from the whole map's level 1-2 mix, whose softboxes were three times too bright at their
+// from the whole map's level 1-2 mix, whose softboxes were 2.8 times too bright at their
 // centres (docs/ibl.md). The caller adds weight × the sources (brightSourcesSpecular).
 vec3 prefilteredRadianceLessSources(vec3 r, float perceptualRoughness, out float weight)
 {

@@ -104,8 +104,8 @@ struct ForwardPass::Impl {
     // and what decides when they may: the light buffer's revision last seen, whether it has
     // changed since the first frame, and for how many frames it has not.
     std::string lightValues;
-    uint64_t lightRevision = 0;
-    bool lightsSeen = false, lightsEdited = false;
+    uint64_t lightRevision = 0, valuesRevision = 0;
+    bool lightsSeen = false, lightsEdited = false, valuesMade = false;
     int stillFrames = 0;
     // Frames the lights must stay still after an edit before the programs take them as
     // constants again: a light dragged in the viewer changes every frame, and each new set of
@@ -115,7 +115,7 @@ struct ForwardPass::Impl {
     // The lights as constants while they stay still: from the first frame (a render, a bench,
     // a viewer before any edit), and again kSettleFrames after the last edit; meanwhile the
     // programs that read the light buffer. Only for the constant-count programs of a frame
-    // without shadow maps (a record's shadow slot changes without an edit).
+    // without shadow maps.
     void updateLightConstants(const FrameContext& frame, const ShadowVariant& shadows)
     {
         const LightBuffer& buffer = frame.stores.lights;
@@ -128,7 +128,11 @@ struct ForwardPass::Impl {
             ++stillFrames;
         }
         lights.constants = lights.all && lights.count > 0 && !shadows.active() && (!lightsEdited || stillFrames >= kSettleFrames);
-        if (!lights.constants) return;
+        // The values change only with the revision (a shadow slot may change without it, but a
+        // frame without shadow maps compiles out what reads it).
+        if (!lights.constants || (valuesMade && valuesRevision == lightRevision)) return;
+        valuesMade = true;
+        valuesRevision = lightRevision;
         std::string values;
         for (int i = 0; i < buffer.count(); ++i) {
             const shared::GpuLight g = LightBuffer::pack(buffer.light(i), buffer.shadowSlot(i), buffer.cutoff());
