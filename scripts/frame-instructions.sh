@@ -8,8 +8,8 @@
 # leaves the rasteriser (fragment shading, depth, blending, resolves) and compute shaders. Warm
 # the bake cache first (`specula bake MAP`): a bake is compute work and would be counted.
 # Instructions are not time: arithmetic runs more of them per second than texture reads (pair
-# B's four lights are 31 % of its instructions and about 11 % of its time, the prefiltered read
-# 13 % and 8-13 %), so confirm a change this count favours with interleaved timings
+# B's four lights are 31 % of its instructions and 10-15 % of its time, the prefiltered read
+# 13 % and 7-13 %), so confirm a change this count favours with interleaved timings
 # (docs/performance.md).
 #   scripts/frame-instructions.sh [SPECULA] RENDER_ARGS...
 #   SPECULA_SHADER_DIR=/tmp/copy scripts/frame-instructions.sh build/specula learnopengl-ibl --camera 0
