@@ -109,11 +109,16 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
         pipeline.frontFaceClockwise = item.mirrored;
         pipeline.depthBiasSlope = options.depthBiasSlope;
         pipeline.depthBiasConstant = options.depthBiasConstant;
+        // A double-sided blended surface "over" the frame: its back faces first, then its front
+        // faces (two draws), so that a closed mesh's far side is under its near side.
+        bool backFacesFirst = false;
         if (blendList && options.blend && m.alphaMode == scene::AlphaMode::Blend) {
             pipeline.blend = options.blendOutput == BlendOutput::WeightedOit ? gl::BlendMode::WeightedOit
                                                                              : gl::BlendMode::PremultipliedAlpha;
             pipeline.noDepthWrite = true;
+            backFacesFirst = m.doubleSided && options.blendOutput == BlendOutput::Premultiplied;
         }
+        if (backFacesFirst) pipeline.cull = gl::CullMode::Front;
         state.apply(pipeline);
         if (options.textures == MaterialTextures::All) {
             // An extension's slots only for the variant that samples them.
@@ -145,6 +150,11 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
         const uint32_t first = p.indexed && !p.lods.empty() ? p.lods[size_t(command.lod)].first : 0u;
         const uint32_t count = p.indexed && !p.lods.empty() ? p.lods[size_t(command.lod)].count : p.count;
         state.drawTriangles(count, p.indexed, first);
+        if (backFacesFirst) {
+            pipeline.cull = gl::CullMode::Back;
+            state.apply(pipeline);
+            state.drawTriangles(count, p.indexed, first);
+        }
         triangles += count / 3;
     }
     return triangles;

@@ -37,6 +37,19 @@ gl::Wrap toGl(scene::Wrap w)
     return gl::Wrap::Repeat;
 }
 
+/// Image `image`'s alpha is 255 in every texel, or it is missing or undecodable (the draw then
+/// binds white): sampled and filtered, it never lowers a factor's alpha.
+bool opaqueAlpha(const scene::Scene& scene, int image)
+{
+    if (image < 0 || size_t(image) >= scene.images.size()) return true;
+    const scene::Image& source = scene.images[size_t(image)];
+    const size_t texels = size_t(std::max(source.width, 0)) * size_t(std::max(source.height, 0));
+    if (texels == 0 || source.pixels.size() < texels * 4) return true;
+    for (size_t i = 0; i < texels; ++i)
+        if (source.pixels[i * 4 + 3] != 255) return false;
+    return true;
+}
+
 /// `source` box-filtered down to fit `maxSize` on both sides, keeping its aspect ratio (each
 /// output texel averages the source texels its footprint covers, at least one).
 scene::Image downscaled(const scene::Image& source, int maxSize)
@@ -234,8 +247,10 @@ GpuScene::GpuScene(const scene::Scene& scene)
         for (int slot = 0; slot < int(TextureSlot::Count); ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
 
         MaterialBinding binding;
-        binding.alphaMode = m.alphaMode;
+        binding.alphaMode = binding.declaredAlphaMode = m.alphaMode;
         binding.doubleSided = m.doubleSided;
+        if (m.alphaMode == scene::AlphaMode::Blend && m.baseColorTexture.valid())
+            binding.opaqueTexels = opaqueAlpha(scene, m.baseColorTexture.image);
         binding.transmission = m.transmissionFactor;
         const struct {
             const scene::TextureRef& ref;
@@ -372,6 +387,11 @@ GpuScene::GpuScene(const scene::Scene& scene)
             if (!p.hasColors) continue;
             gpu.material = gpu.baseMaterial = colourCopy(gpu.baseMaterial);
             for (scene::VariantMapping& mapping : gpu.variants) mapping.material = colourCopy(mapping.material);
+            const bool opaqueColours =
+                std::all_of(p.vertices.begin(), p.vertices.end(), [](const scene::Vertex& v) { return v.color.a >= 1.0f; });
+            if (opaqueColours) continue;
+            mMaterials[size_t(gpu.baseMaterial)].opaqueTexels = false;
+            for (const scene::VariantMapping& mapping : gpu.variants) mMaterials[size_t(mapping.material)].opaqueTexels = false;
         }
     }
     // Each record starts at a multiple of GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT so it can be bound alone.
@@ -383,6 +403,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
     mMaterialBuffer = gl::Buffer(records.size(), records.data(), "materials");
     mRecords = std::move(gpuMaterials);
     mMaterialCount = int(materials.size());
+    for (size_t record = 0; record < mMaterials.size(); ++record) updateCoverage(record);
 
     // Skins, morph targets and animations make the scene move: keep what posing needs, and
     // give each draw of a deformed primitive a vertex buffer of its own.
@@ -501,9 +522,23 @@ size_t GpuScene::setPose(int animation, float seconds)
     return uploaded;
 }
 
+void GpuScene::updateCoverage(size_t record)
+{
+    MaterialBinding& binding = mMaterials[record];
+    const shared::GpuMaterial& r = mRecords[record];
+    const bool opaque =
+        binding.declaredAlphaMode == scene::AlphaMode::Blend && binding.opaqueTexels && r.baseColorFactor.a >= 1.0f;
+    const scene::AlphaMode mode = opaque ? scene::AlphaMode::Opaque : binding.declaredAlphaMode;
+    // The variant key: no blending, or the record's (the declared blend mode: setBlendMode).
+    constexpr uint32_t blendBits = SPECULA_MATERIAL_ALPHA_BLEND | SPECULA_MATERIAL_BLEND_TRANSPARENT;
+    binding.features = (binding.features & ~blendBits) | (opaque ? 0u : r.flags.x & blendBits);
+    binding.alphaMode = mode;
+}
+
 bool castsShadow(const MaterialBinding& material)
 {
-    return material.alphaMode != scene::AlphaMode::Blend && material.transmission < kTransmissionShadowLimit;
+    // The declared mode: a blended material drawn opaque (alpha 1) still casts none.
+    return material.declaredAlphaMode != scene::AlphaMode::Blend && material.transmission < kTransmissionShadowLimit;
 }
 
 void GpuScene::setShading(int material, const scene::MaterialShading& shading)
@@ -518,13 +553,13 @@ void GpuScene::setShading(int material, const scene::MaterialShading& shading)
 void GpuScene::setBlendMode(int material, scene::BlendMode mode)
 {
     for (size_t record = 0; record < mMaterials.size(); ++record) {
-        if (mRecordMaterial[record] != material || mMaterials[record].alphaMode != scene::AlphaMode::Blend) continue;
-        uint32_t& features = mMaterials[record].features;
-        features = mode == scene::BlendMode::Transparent ? features | SPECULA_MATERIAL_BLEND_TRANSPARENT
-                                                         : features & ~uint32_t(SPECULA_MATERIAL_BLEND_TRANSPARENT);
-        // The record's flags say the same (the shader reads the variant, tools read the record).
-        mRecords[record].flags.x = (mRecords[record].flags.x & ~uint32_t(SPECULA_MATERIAL_BLEND_TRANSPARENT)) |
-                                   (features & SPECULA_MATERIAL_BLEND_TRANSPARENT);
+        if (mRecordMaterial[record] != material || mMaterials[record].declaredAlphaMode != scene::AlphaMode::Blend) continue;
+        // The record holds the declared mode (tools read it); the variant key follows it
+        // while the material is drawn blended (updateCoverage).
+        uint32_t& flags = mRecords[record].flags.x;
+        flags = mode == scene::BlendMode::Transparent ? flags | SPECULA_MATERIAL_BLEND_TRANSPARENT
+                                                      : flags & ~uint32_t(SPECULA_MATERIAL_BLEND_TRANSPARENT);
+        updateCoverage(record);
         mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
                                &mRecords[record].flags.x);
     }
@@ -544,10 +579,14 @@ void GpuScene::setFeature(int material, uint32_t bit, bool on)
 
 void GpuScene::writeMaterial(int material, size_t offset, size_t size, const void* data)
 {
+    // The base colour's alpha decides whether a blended material is drawn opaque.
+    constexpr size_t alpha = offsetof(shared::GpuMaterial, baseColorFactor) + 3 * sizeof(float);
+    const bool writesAlpha = offset <= alpha && alpha < offset + size;
     for (size_t record = 0; record < mRecords.size(); ++record) {
         if (mRecordMaterial[record] != material) continue;
         std::memcpy(reinterpret_cast<std::byte*>(&mRecords[record]) + offset, data, size);
         mMaterialBuffer.update(materialOffset(int(record)) + offset, size, data);
+        if (writesAlpha) updateCoverage(record);
     }
 }
 

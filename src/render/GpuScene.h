@@ -54,7 +54,18 @@ int textureUnit(TextureSlot slot);
 struct MaterialBinding {
     std::array<const gl::Texture*, size_t(TextureSlot::Count)> textures{};
     std::array<const gl::Sampler*, size_t(TextureSlot::Count)> samplers{};
+    /// The alpha mode the material is drawn with: the file's (`declaredAlphaMode`), except that
+    /// a blended material whose alpha is 1 wherever it is drawn is drawn as opaque
+    /// (GpuScene::updateCoverage): blending it gives the surface itself, the frontmost layer
+    /// wins as it does with every triangle sorted. It still casts no shadow (castsShadow reads
+    /// the declared mode: files mark lamps and decals BLEND so). Drawn blended, without
+    /// depth writes and in index order, a mesh that overlaps itself (a closed model, the back
+    /// faces of a double-sided one) shows far triangles over near ones.
     scene::AlphaMode alphaMode = scene::AlphaMode::Opaque;
+    scene::AlphaMode declaredAlphaMode = scene::AlphaMode::Opaque;
+    /// Nothing but the factor lowers the alpha: the base colour texture's alpha and the vertex
+    /// colours' (of every primitive drawn with this record) are 1 everywhere, or there are none.
+    bool opaqueTexels = true;
     bool doubleSided = false;
     float transmission = 0.0f; ///< KHR_materials_transmission factor
     /// SPECULA_MATERIAL_* bits: selects the shader variant, and which extension texture units
@@ -64,7 +75,8 @@ struct MaterialBinding {
 
 /// The shadow rule for surfaces light passes through (docs/transparency.md): a surface casts
 /// where it stops at least half of the light. Blended surfaces cast none (their alpha varies
-/// per texel and a depth map holds no fraction); transmissive ones cast none from a
+/// per texel and a depth map holds no fraction; nor do those drawn opaque for an alpha of 1:
+/// MaterialBinding::declaredAlphaMode); transmissive ones cast none from a
 /// transmission factor of 0.5 up, and cast like opaque ones below it.
 constexpr float kTransmissionShadowLimit = 0.5f;
 bool castsShadow(const MaterialBinding& material);
@@ -138,6 +150,9 @@ private:
     const gl::Texture* texture(const scene::Scene& scene, int image, bool srgb);
     const gl::Sampler* sampler(const scene::Scene& scene, int index);
     void updateBounds();
+    /// Draws record `record` opaque or blended (MaterialBinding::alphaMode) from its declared
+    /// mode, its texels and its factor's alpha as the record holds it; its variant key follows.
+    void updateCoverage(size_t record);
 
     /// What posing needs of the scene: its nodes, meshes, skins and animations (no images).
     std::optional<scene::Scene> mRig;

@@ -483,7 +483,8 @@ void Renderer::setMaterialShading(int material, const scene::MaterialShading& sh
 scene::BlendMode Renderer::materialBlendMode(int material) const
 {
     if (material < 0 || material >= materialCount()) return scene::BlendMode::Fade;
-    return mImpl->stores.scene->materials()[size_t(material)].features & SPECULA_MATERIAL_BLEND_TRANSPARENT
+    // The record's flags: the declared mode, also while alpha 1 has the material drawn opaque.
+    return mImpl->stores.scene->record(material).flags.x & SPECULA_MATERIAL_BLEND_TRANSPARENT
                ? scene::BlendMode::Transparent
                : scene::BlendMode::Fade;
 }

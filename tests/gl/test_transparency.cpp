@@ -480,8 +480,198 @@ TEST_F(GlTest, TransparencyOitIsOrderIndependent)
     EXPECT_GT(single, 300);
 }
 
+// -- one blended mesh that overlaps itself ----------------------------------------------------
+
+namespace {
+
+/// Unlit, coloured by its vertices: a pixel is its surface's colour exactly.
+scene::Material blendedUnlit(float alpha, bool doubleSided)
+{
+    scene::Material m;
+    m.name = "blended";
+    m.baseColorFactor = glm::vec4(1.0f, 1.0f, 1.0f, alpha);
+    m.alphaMode = scene::AlphaMode::Blend;
+    m.doubleSided = doubleSided;
+    m.shading.model = scene::ShadingModel::Unlit;
+    return m;
+}
+
+/// Two squares facing +Z in one primitive, the near one (z = 0.5, x in [-1, 0.6]) before the
+/// far one (z = -0.5, x in [-0.6, 1]) in index order: drawn in that order without depth
+/// writes, the far one covers the near one where they overlap.
+struct Square {
+    double z, xMin, xMax;
+    dvec3 color;
+};
+const Square kSquares[2] = {{0.5, -1.0, 0.6, {1.0, 0.2, 0.1}}, {-0.5, -0.6, 1.0, {0.1, 0.3, 1.0}}};
+
+scene::Primitive squaresPrimitive(float colourAlpha = 1.0f)
+{
+    scene::Primitive p;
+    for (const Square& q : kSquares) {
+        const uint32_t base = uint32_t(p.vertices.size());
+        const glm::vec2 corners[4] = {{q.xMin, -0.8}, {q.xMax, -0.8}, {q.xMax, 0.8}, {q.xMin, 0.8}};
+        for (const glm::vec2& c : corners) {
+            scene::Vertex v;
+            v.position = glm::vec3(c, float(q.z));
+            v.normal = glm::vec3(0, 0, 1);
+            v.color = glm::vec4(glm::vec3(q.color), colourAlpha);
+            p.vertices.push_back(v);
+            p.bounds.extend(v.position);
+        }
+        p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+    p.hasColors = true;
+    return p;
+}
+
+} // namespace
+
+// A blended material whose alpha is 1 everywhere covers what is behind it: every layer sorted,
+// the frontmost wins. It is drawn as opaque (render/GpuScene.h, MaterialBinding::alphaMode), so
+// one mesh that overlaps itself shows its near surface, not whichever triangle came last (the
+// pmndrs bunny, a closed double-sided BLEND model of alpha 1, showed its back faces in patches).
+// Each pixel against a ray test of the two squares. Its alpha set to 0.5 at run time (the
+// viewer's material panel), the mesh blends again, "over" in index order; set back to 1 it is
+// opaque again. A texel or a vertex colour below 1 keeps it blended.
+TEST_F(GlTest, TransparencyBlendedWithAlphaOneIsDrawnOpaque)
+{
+    const render::View view = frontView(5.0f);
+    render::FrameSettings settings = exactSettings();
+    settings.background = glm::vec3(kBackground);
+    scene::Scene s;
+    scene::addShape(s, squaresPrimitive(), blendedUnlit(1.0f, false), glm::mat4(1.0f), "squares");
+    render::Renderer renderer;
+    renderer.setScene(s);
+    auto shot = [&] {
+        renderer.render(view, settings);
+        return renderer.readRadiance();
+    };
+    const ImageFloat opaque = shot();
+    renderer.setMaterialParameter(0, render::MaterialParameter::BaseColor, glm::vec4(1.0f, 1.0f, 1.0f, 0.5f));
+    const ImageFloat half = shot();
+    renderer.setMaterialParameter(0, render::MaterialParameter::BaseColor, glm::vec4(1.0f));
+    const ImageFloat again = shot();
+
+    int overlap = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const Ray ray = pixelRay(view, x, y, kSize, kSize);
+            std::vector<const Square*> hits; // in index order
+            bool nearEdge = false;
+            for (const Square& q : kSquares) {
+                const double t = (q.z - ray.origin.z) / ray.direction.z;
+                const dvec3 p = ray.origin + t * ray.direction;
+                const double inside = std::min({p.x - q.xMin, q.xMax - p.x, 0.8 - std::abs(p.y)});
+                if (std::abs(inside) < 0.03) nearEdge = true;
+                if (inside > 0.0) hits.push_back(&q);
+            }
+            if (nearEdge) continue;
+            const dvec3 front = hits.empty() ? kBackground : hits[0]->color; // the near square is first
+            dvec3 over = kBackground;
+            for (const Square* q : hits) over = 0.5 * q->color + 0.5 * over;
+            const dvec3 a = pixel(opaque, x, y), h = pixel(half, x, y), b = pixel(again, x, y);
+            for (int ch = 0; ch < 3; ++ch) {
+                ASSERT_LE(std::abs(a[ch] - front[ch]), 0.01 * front[ch] + kAbsolute)
+                    << "alpha 1 at (" << x << ", " << y << ") channel " << ch << ": " << a[ch] << ", the front surface " << front[ch];
+                ASSERT_LE(std::abs(h[ch] - over[ch]), 0.01 * over[ch] + kAbsolute)
+                    << "alpha 0.5 at (" << x << ", " << y << ") channel " << ch << ": " << h[ch] << ", over in index order " << over[ch];
+                ASSERT_LE(std::abs(b[ch] - front[ch]), 0.01 * front[ch] + kAbsolute) << "alpha 1 again at (" << x << ", " << y << ")";
+            }
+            if (hits.size() == 2) ++overlap;
+        }
+    EXPECT_GT(overlap, 500);
+
+    // What keeps it blended: the factor, a base colour texel, a vertex colour below 1.
+    auto drawnAs = [](const scene::Scene& scene) {
+        const render::GpuScene gpu(scene);
+        return gpu.materials()[size_t(gpu.primitives()[0].material)].alphaMode; // the vertex colours' copy
+    };
+    EXPECT_EQ(drawnAs(s), scene::AlphaMode::Opaque);
+    scene::Scene factor;
+    scene::addShape(factor, squaresPrimitive(), blendedUnlit(0.999f, false), glm::mat4(1.0f), "squares");
+    EXPECT_EQ(drawnAs(factor), scene::AlphaMode::Blend);
+    scene::Scene colours;
+    scene::addShape(colours, squaresPrimitive(0.999f), blendedUnlit(1.0f, false), glm::mat4(1.0f), "squares");
+    EXPECT_EQ(drawnAs(colours), scene::AlphaMode::Blend);
+    for (const uint8_t texelAlpha : {uint8_t(255), uint8_t(254)}) {
+        scene::Scene textured;
+        scene::Image image;
+        image.width = image.height = 2;
+        image.pixels = {255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, texelAlpha};
+        textured.images.push_back(image);
+        scene::Material m = blendedUnlit(1.0f, false);
+        m.baseColorTexture.image = 0;
+        scene::addShape(textured, squaresPrimitive(), m, glm::mat4(1.0f), "squares");
+        EXPECT_EQ(drawnAs(textured), texelAlpha == 255 ? scene::AlphaMode::Opaque : scene::AlphaMode::Blend);
+    }
+}
+
+// A closed double-sided blended mesh of alpha 0.5: a cube whose faces have their own colours,
+// seen from a corner, in makeCube's face order (+X, −X, +Y, −Y, +Z, −Z: back faces drawn after
+// front ones). Its back faces are drawn first, then its front faces, so every pixel is the
+// front face over the back face over the background ("over", Porter–Duff), the faces found by an
+// exact ray–box test.
+TEST_F(GlTest, TransparencyDoubleSidedBlendDrawsBackFacesFirst)
+{
+    constexpr double kHalf = 0.6, kAlpha = 0.5;
+    const render::View view =
+        render::lookAtView({2.2f, 1.6f, 3.0f}, {0, 0, 0}, {0, 1, 0}, glm::radians(30.0f), 1.0f, 0.1f, 20.0f);
+    render::FrameSettings settings = exactSettings();
+    settings.background = glm::vec3(kBackground);
+    auto faceColor = [](const dvec3& n) { return dvec3(0.5) + 0.45 * n; };
+    scene::Primitive cube = scene::makeCube(float(kHalf));
+    for (scene::Vertex& v : cube.vertices) v.color = glm::vec4(glm::vec3(faceColor(dvec3(v.normal))), 1.0f);
+    cube.hasColors = true;
+    scene::Scene s;
+    scene::addShape(s, std::move(cube), blendedUnlit(float(kAlpha), true), glm::mat4(1.0f), "cube");
+    const ImageFloat image = renderScene(s, view, settings);
+
+    int twoLayers = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const Ray ray = pixelRay(view, x, y, kSize, kSize);
+            // Slabs: the entry face is the axis of the largest near t, the exit the smallest far t.
+            double tNear = -1e30, tFar = 1e30;
+            int entryAxis = 0, exitAxis = 0;
+            for (int axis = 0; axis < 3; ++axis) {
+                const double t0 = (-kHalf - ray.origin[axis]) / ray.direction[axis];
+                const double t1 = (kHalf - ray.origin[axis]) / ray.direction[axis];
+                if (std::min(t0, t1) > tNear) tNear = std::min(t0, t1), entryAxis = axis;
+                if (std::max(t0, t1) < tFar) tFar = std::max(t0, t1), exitAxis = axis;
+            }
+            dvec3 want = kBackground;
+            if (tNear < tFar) {
+                const dvec3 entry = ray.origin + tNear * ray.direction, exit = ray.origin + tFar * ray.direction;
+                // Clear of the cube's edges, where a pixel may be two faces.
+                auto nearEdge = [&](const dvec3& p, int axis) {
+                    for (int other = 0; other < 3; ++other)
+                        if (other != axis && kHalf - std::abs(p[other]) < 0.03) return true;
+                    return false;
+                };
+                if (nearEdge(entry, entryAxis) || nearEdge(exit, exitAxis)) continue;
+                dvec3 n(0.0);
+                n[entryAxis] = entry[entryAxis] > 0.0 ? 1.0 : -1.0;
+                const dvec3 front = faceColor(n);
+                n = dvec3(0.0);
+                n[exitAxis] = exit[exitAxis] > 0.0 ? 1.0 : -1.0;
+                const dvec3 back = faceColor(n);
+                want = kAlpha * front + (1.0 - kAlpha) * (kAlpha * back + (1.0 - kAlpha) * kBackground);
+                ++twoLayers;
+            } else if (tFar > tNear - 0.05 && tNear < 1e29) {
+                continue; // grazing the silhouette
+            }
+            const dvec3 got = pixel(image, x, y);
+            for (int ch = 0; ch < 3; ++ch)
+                ASSERT_LE(std::abs(got[ch] - want[ch]), 0.01 * want[ch] + kAbsolute)
+                    << "at (" << x << ", " << y << ") channel " << ch << ": " << got[ch] << ", front over back " << want[ch];
+        }
+    EXPECT_GT(twoLayers, 1000);
+}
+
 // The shadow rule (render/GpuScene.h): opaque surfaces and those that let less than half the
-// light through cast; blended ones and those of transmission 0.5 and above do not.
+// light through cast; blended ones and those of transmission 0.5 and above do not. A blended
+// material of alpha 1 everywhere is drawn opaque, and casts none still (ShadowsSpot's lamp).
 TEST_F(GlTest, TransparencyShadowCastersFollowTheRule)
 {
     scene::Scene s;
@@ -490,15 +680,18 @@ TEST_F(GlTest, TransparencyShadowCastersFollowTheRule)
         scene::AlphaMode alphaMode;
         float transmission;
         bool casts;
-    } kinds[] = {{"opaque", scene::AlphaMode::Opaque, 0.0f, true},
-                 {"blended", scene::AlphaMode::Blend, 0.0f, false},
-                 {"tinted glass", scene::AlphaMode::Opaque, 0.3f, true},
-                 {"clear glass", scene::AlphaMode::Opaque, 0.5f, false},
-                 {"blended glass", scene::AlphaMode::Blend, 0.2f, false}};
+        float alpha;
+    } kinds[] = {{"opaque", scene::AlphaMode::Opaque, 0.0f, true, 1.0f},
+                 {"blended", scene::AlphaMode::Blend, 0.0f, false, 0.5f},
+                 {"blended of alpha 1 (drawn opaque, casts none)", scene::AlphaMode::Blend, 0.0f, false, 1.0f},
+                 {"tinted glass", scene::AlphaMode::Opaque, 0.3f, true, 1.0f},
+                 {"clear glass", scene::AlphaMode::Opaque, 0.5f, false, 1.0f},
+                 {"blended glass", scene::AlphaMode::Blend, 0.2f, false, 0.5f}};
     for (const Kind& k : kinds) {
         scene::Material m;
         m.name = k.name;
         m.alphaMode = k.alphaMode;
+        m.baseColorFactor.a = k.alpha;
         m.transmissionFactor = k.transmission;
         scene::addShape(s, scene::makeCube(0.5f), m, glm::mat4(1.0f), k.name);
     }
@@ -518,7 +711,9 @@ TEST_F(GlTest, TransparencyShadowCastersFollowTheRule)
     const render::DrawList transmissive = render::DrawList::build(gpu, view, viewProjection, render::DrawFilter::Transmissive, programs);
     EXPECT_EQ(transmissive.commands().size(), 3u);
     const render::DrawList opaque = render::DrawList::build(gpu, view, viewProjection, render::DrawFilter::Opaque, programs);
-    EXPECT_EQ(opaque.commands().size(), 1u);
+    EXPECT_EQ(opaque.commands().size(), 2u);
+    const render::DrawList blended = render::DrawList::build(gpu, view, viewProjection, render::DrawFilter::Blended, programs);
+    EXPECT_EQ(blended.commands().size(), 1u);
 }
 
 // -- dispersion ------------------------------------------------------------------------------
