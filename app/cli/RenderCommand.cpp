@@ -178,6 +178,12 @@ int runRender(const RenderArgs& args)
                               : std::string());
             if (settings.debugView == DebugView::ShadowAtlas && shadows.lights == 0)
                 log::warn("--debug-view shadow-atlas: no light of this scene casts a shadow, so the image is the frame itself");
+            const bool firstLightView = settings.debugView == DebugView::BrdfD || settings.debugView == DebugView::BrdfG ||
+                                        settings.debugView == DebugView::BrdfF;
+            if (firstLightView && renderer.lightCount() == 0)
+                log::warn("--debug-view {}: the term is the first punctual light's and this scene has none, so the image is "
+                          "black (scenes without lights get the default rig with --env none)",
+                          debugViewName(settings.debugView));
             if (args.stats) {
                 // After the written frame, so its start-up figure is unchanged; the first timed frame
                 // would include shader compilation, so one untimed frame goes first.

@@ -90,3 +90,21 @@ TEST(CliMaterials, SheenDebugViewShowsOnlyTheSheen)
     EXPECT_EQ(at(48, y), 0);
     EXPECT_GT(at(80, y), 10); // red of c E(n.v) for the pink sheen, n.v about 0.7
 }
+
+// The BRDF views show the first punctual light's term: a scene without one is black, and the
+// render says why. With --env none it gets the default rig, and nothing is said.
+TEST(CliMaterials, FirstLightDebugViewsSayWhenThereIsNoLight)
+{
+    const std::string dir = tempDir("materials-first-light");
+    const std::string model = std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/clearcoat_quad.gltf";
+    for (const char* view : {"brdf-d", "brdf-g", "brdf-f"}) {
+        const auto dark = runCli("render " + model + " -o " + dir + "/dark.png --width 32 --height 32 --debug-view " + view);
+        ASSERT_EQ(dark.exitCode, 0) << dark.err;
+        EXPECT_NE(dark.err.find(std::string("--debug-view ") + view + ": the term is the first punctual light's and this scene has none"),
+                  std::string::npos)
+            << dark.err;
+        const auto lit = runCli("render " + model + " --env none -o " + dir + "/lit.png --width 32 --height 32 --debug-view " + view);
+        ASSERT_EQ(lit.exitCode, 0) << lit.err;
+        EXPECT_EQ(lit.err.find("has none"), std::string::npos) << lit.err;
+    }
+}
