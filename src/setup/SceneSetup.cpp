@@ -300,8 +300,10 @@ std::optional<render::EnvironmentMap> loadEnvironment(scene::SceneDocument& docu
     light.color = lux > 0.0f ? sun->illuminance / lux : glm::vec3(1.0f);
     light.angularDiameter = sun->angularDiameter;
     scene::addLight(document.scene, light, glm::vec3(0.0f), -toSun);
-    log::info("--env-sun extract: sun of {:.0f} lux, {:.2f}° across, {} texels, now a directional light", light.intensity,
-              glm::degrees(sun->angularDiameter), sun->texels);
+    log::info("--env-sun extract: sun of {:.0f} lux, {:.2f}° across, {} texels, towards ({:.4f}, {:.4f}, {:.4f}) ({:.1f}° above "
+              "the horizon), now a directional light",
+              light.intensity, glm::degrees(sun->angularDiameter), sun->texels, toSun.x, toSun.y, toSun.z,
+              glm::degrees(std::asin(std::clamp(toSun.y, -1.0f, 1.0f))));
     return map;
 }
 
