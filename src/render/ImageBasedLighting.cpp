@@ -39,12 +39,13 @@ std::string BakeSettings::key() const
     // changes (v2: the irradiance cube; v3: the bright sources' residual cube and prefiltered
     // levels; v4: with the count of the sources the specular lobe takes; v5: the bright sources the
     // irradiance cube can hold folded into it; v6: each source's spread; v7: the prefiltered
-    // chain's level 0 not stored when it is the cube's; v8: the residual chain from level 1).
+    // chain's level 0 not stored when it is the cube's; v8: the residual chain from level 1; v9:
+    // the sky's own cube when it shows what lighting does not, an extracted sun).
     const uint64_t shaders = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/equirect_to_cube.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/downsample.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/irradiance.comp", {}).text);
-    return fmt::format("v8-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
+    return fmt::format("v9-c{}-p{}x{}s{}-i{}s{}-{:08x}", cubeSize, prefilterSize, prefilterLevels, prefilterSamples, kIrradianceSize,
                        kIrradianceSourceWidth, uint32_t(shaders ^ (shaders >> 32)));
 }
 
@@ -253,7 +254,7 @@ gl::Texture equirectSource(const EnvironmentMap& map)
 struct BakeStep {
     enum class Op { ToCube, Mipmaps, CopyLevelZero, Prefilter };
     Op op = Op::ToCube;
-    int slot = 0;            ///< 0: the map, 1: the residual (less the specular lobe's sources)
+    int slot = 0;            ///< 0: the map, 1: the residual (less the specular lobe's sources), 2: the sky
     int level = 0;           ///< Prefilter: the target's level
     float roughness = 0.0f;  ///< Prefilter: perceptual roughness
     int face = 0, faces = 6; ///< faces [face, face + faces)
@@ -262,12 +263,14 @@ struct BakeStep {
     std::string stage;       ///< the log's stage it belongs to
 };
 
-/// A bake's textures while it runs: slot 0 the map's, slot 1 the residual's (empty when none).
+/// A bake's textures while it runs: slot 0 the map's, slot 1 the residual's, slot 2 the sky's
+/// (its base level only; no prefiltered chain). Slots 1 and 2 are empty when not needed.
+using BakeSources = std::array<std::shared_ptr<const gl::Texture>, 3>;
 struct BakeJob {
     BakeSettings s;
     /// The equirect sources, shared by a progressive bake's preview and full jobs.
-    std::array<std::shared_ptr<const gl::Texture>, 2> source;
-    std::array<gl::Texture, 2> cube, prefiltered;
+    BakeSources source;
+    std::array<gl::Texture, 3> cube, prefiltered;
     std::vector<BakeStep> steps;
     size_t next = 0;
     double total = 0.0, done = 0.0; ///< texture reads
@@ -294,6 +297,8 @@ struct ImageBasedLighting::Impl {
     // With brightSourcesSpecular: the cube less the bright sources, and the prefiltered chain's
     // levels from kResidualFirstLevel on made from it.
     gl::Texture residualCube, residualPrefiltered;
+    // The sky's cube (one level) where it shows what lighting does not (EnvironmentMap::skyOnly).
+    gl::Texture skyCube;
     int specularSources = 0; // the first this many bright sources; 0: none
     int analysedSpecularSources = 0; // what analyse found: specularSources once a bake has a residual
     /// The full bake still running after a preview (BakeMode::Progressive).
@@ -339,11 +344,11 @@ struct ImageBasedLighting::Impl {
     }
 
     /// A bake's GPU work on the map (and on its residual, sources[1], when not null): the cubes,
-    /// then their prefiltered chains, as steps run in order (runStep). maxReads 0: one step per
-    /// level, the bake at once; else steps of a band of rows of one face, each about that many
-    /// texture reads, for a bake spread over frames.
-    std::unique_ptr<BakeJob> makeJob(const std::array<std::shared_ptr<const gl::Texture>, 2>& sources, const BakeSettings& s,
-                                     double maxReads)
+    /// then their prefiltered chains, and the sky's cube from sources[2] when not null, as steps
+    /// run in order (runStep). maxReads 0: one step per level, the bake at once; else steps of a
+    /// band of rows of one face, each about that many texture reads, for a bake spread over
+    /// frames.
+    std::unique_ptr<BakeJob> makeJob(const BakeSources& sources, const BakeSettings& s, double maxReads)
     {
         auto job = std::make_unique<BakeJob>();
         job->s = s;
@@ -388,6 +393,16 @@ struct ImageBasedLighting::Impl {
                 }
                 addBands(*job, step, size, step.roughness > 0.0f ? double(s.prefilterSamples) : 1.0, maxReads);
             }
+        }
+        if (sources[2]) {
+            job->source[2] = sources[2];
+            gl::TextureDesc desc;
+            desc.type = gl::TextureType::Cube;
+            desc.format = gl::Format::RGBA16F;
+            desc.width = desc.height = s.cubeSize;
+            desc.label = "sky cube";
+            job->cube[2] = gl::Texture(desc);
+            addBands(*job, {.op = BakeStep::Op::ToCube, .slot = 2, .stage = "sky cube"}, s.cubeSize, 1.0, maxReads);
         }
         return job;
     }
@@ -500,6 +515,7 @@ struct ImageBasedLighting::Impl {
         prefiltered = std::move(job->prefiltered[0]);
         residualCube = std::move(job->cube[1]);
         residualPrefiltered = std::move(job->prefiltered[1]);
+        skyCube = std::move(job->cube[2]);
         specularSources = residualCube ? analysedSpecularSources : 0;
         has = true;
         if (cacheFile.empty()) return;
@@ -518,6 +534,9 @@ struct ImageBasedLighting::Impl {
                 writeTextures(out, residualCube);
                 writeTextures(out, residualPrefiltered);
             }
+            const int32_t sky = skyCube ? 1 : 0;
+            out.write(reinterpret_cast<const char*>(&sky), sizeof sky);
+            if (sky) writeTextures(out, skyCube);
         };
         if (!inBackground) {
             writeAtomically(cacheFile, write);
@@ -548,6 +567,15 @@ struct ImageBasedLighting::Impl {
         return specularSources == 0 || (readTexture(in, residualCube, "environment cube less its bright sources", gl::Format::RGBA16F, 4) &&
                                     readTexture(in, residualPrefiltered, "prefiltered environment less its bright sources",
                                                 gl::Format::RGBA16F, 4));
+    }
+
+    /// The cache's sky cube (after the residual textures): a flag, then the cube when it is 1.
+    bool readSky(std::ifstream& in)
+    {
+        int32_t flag = -1;
+        skyCube = gl::Texture();
+        if (!in.read(reinterpret_cast<char*>(&flag), sizeof flag) || (flag != 0 && flag != 1)) return false;
+        return flag == 0 || readTexture(in, skyCube, "sky cube", gl::Format::RGBA16F, 4);
     }
 
     /// The irradiance cube: the map reduced on the CPU (32-bit float), convolved on the GPU.
@@ -605,6 +633,7 @@ ImageBasedLighting& ImageBasedLighting::operator=(ImageBasedLighting&&) noexcept
 bool ImageBasedLighting::hasEnvironment() const { return mImpl->has; }
 const Sh9& ImageBasedLighting::sh() const { return mImpl->sh; }
 const gl::Texture& ImageBasedLighting::cube() const { return mImpl->cube; }
+const gl::Texture& ImageBasedLighting::sky() const { return mImpl->skyCube ? mImpl->skyCube : mImpl->cube; }
 const gl::Texture& ImageBasedLighting::prefiltered() const { return mImpl->prefiltered; }
 const gl::Texture& ImageBasedLighting::irradiance() const { return mImpl->irradiance; }
 const std::vector<IrradianceSource>& ImageBasedLighting::brightSources() const { return mImpl->bright; }
@@ -644,7 +673,8 @@ BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const Environmen
             (levelZeroFromCube == 0 || levelZeroFromCube == 1) &&
             readTexture(in, r.prefiltered, "prefiltered environment", gl::Format::RGBA16F, 4, levelZeroFromCube ? &r.cube : nullptr) &&
             readTexture(in, r.irradiance, "irradiance", gl::Format::RGBA16F, 4) &&
-            in.read(reinterpret_cast<char*>(r.sh.data()), sizeof(Sh9)) && readBright(in, r.bright) && r.readResidual(in)) {
+            in.read(reinterpret_cast<char*>(r.sh.data()), sizeof(Sh9)) && readBright(in, r.bright) && r.readResidual(in) &&
+            r.readSky(in)) {
             r.has = true;
             report.fromCache = true;
             report.milliseconds = watch.elapsedMs();
@@ -664,9 +694,10 @@ BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const Environmen
         const std::optional<EnvironmentMap> residual = r.analyse(state, map);
         glFinish();
         const double analysisMs = analysis.elapsedMs();
-        std::array<std::shared_ptr<const gl::Texture>, 2> sources;
+        BakeSources sources;
         sources[0] = std::make_shared<const gl::Texture>(equirectSource(map));
         if (residual) sources[1] = std::make_shared<const gl::Texture>(equirectSource(*residual));
+        if (!map.skyOnly.empty()) sources[2] = std::make_shared<const gl::Texture>(equirectSource(skyOf(map)));
         // A progressive bake's steps: a band of rows of a face, about 2M texture reads each
         // (10-20 ms on llvmpipe, well under one on a GPU).
         constexpr double kReadsPerStep = 2.0e6;

@@ -103,7 +103,21 @@ EnvironmentMap downscaledToFit(const EnvironmentMap& map, int maxSize)
             out.texels[size_t(y) * size_t(out.width) + size_t(x)] = glm::vec3(sum / double(int64_t(y1 - y0) * (x1 - x0)));
         }
     }
+    if (!map.skyOnly.empty()) {
+        // The sky's texels downscaled the same way: those that differ from the lighting's.
+        const EnvironmentMap sky = downscaledToFit(skyOf(map), maxSize);
+        for (size_t i = 0; i < out.texels.size(); ++i)
+            if (sky.texels[i] != out.texels[i]) out.skyOnly.push_back({i, sky.texels[i]});
+    }
     return out;
+}
+
+EnvironmentMap skyOf(const EnvironmentMap& map)
+{
+    EnvironmentMap sky = map;
+    for (const EnvironmentMap::SkyTexel& t : map.skyOnly) sky.texels[t.index] = t.radiance;
+    sky.skyOnly.clear();
+    return sky;
 }
 
 EnvironmentMap constantEnvironment(const glm::vec3& radiance)

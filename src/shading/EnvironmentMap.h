@@ -21,6 +21,15 @@ struct EnvironmentMap {
     std::vector<glm::vec3> texels;
     /// Identifies the content for the bake cache (a hash of the file bytes or of the parameters).
     std::string key;
+    /// Texels the sky shows brighter than lighting sees them: what a light took out of the map
+    /// (the extracted sun, shading/SunExtraction), as (index into `texels`, the radiance the
+    /// sky shows there). Empty for a map as loaded. The bake makes the sky's cube from
+    /// skyOf(map) and everything that lights from `texels`.
+    struct SkyTexel {
+        size_t index;
+        glm::vec3 radiance;
+    };
+    std::vector<SkyTexel> skyOnly;
 
     glm::vec3 at(int x, int y) const { return texels[size_t(y) * size_t(width) + size_t(x)]; }
     /// Bilinear lookup in direction d (environment space), wrapping in u.
@@ -54,6 +63,8 @@ EnvironmentMap constantEnvironment(const glm::vec3& radiance);
 /// texel the mean radiance of the source texels its footprint covers, at least one); the same
 /// map when it fits. Its key names the new size (the bake cache keeps them apart).
 EnvironmentMap downscaledToFit(const EnvironmentMap& map, int maxSize);
+/// What the sky shows: `map` with its skyOnly texels in place (and none left over).
+EnvironmentMap skyOf(const EnvironmentMap& map);
 EnvironmentMap proceduralSky(const SkyParams& params = {}, int width = 512);
 
 /// Order-2 (9-coefficient) real spherical harmonics of the radiance, projected with the exact

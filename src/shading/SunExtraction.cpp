@@ -128,7 +128,11 @@ std::optional<ExtractedSun> extractSun(EnvironmentMap& map, const SunCriteria& c
         }
     if (double(luminance(glm::vec3(illuminance))) < criteria.minFraction * facing) return std::nullopt;
 
-    for (size_t i : region) map.texels[i] = glm::min(map.texels[i], fill);
+    for (size_t i : region) {
+        const glm::vec3 lit = glm::min(map.texels[i], fill);
+        if (lit != map.texels[i]) map.skyOnly.push_back({i, map.texels[i]}); // the sky still shows the sun
+        map.texels[i] = lit;
+    }
     ExtractedSun sun;
     sun.direction = glm::vec3(direction);
     sun.illuminance = glm::vec3(illuminance);

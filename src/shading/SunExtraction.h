@@ -35,6 +35,7 @@ struct SunCriteria {
 
 /// Finds the sun of `map` and removes it (its texels set to the level around it, the excess
 /// becoming the light: the map's irradiance is kept to within the rounding of that level).
+/// The sky still shows it: the texels' radiance as it was goes to map.skyOnly.
 /// Nullopt, and `map` untouched, when nothing in it meets `criteria`.
 std::optional<ExtractedSun> extractSun(EnvironmentMap& map, const SunCriteria& criteria = {});
 

@@ -95,6 +95,29 @@ TEST(SunExtraction, RealSunsKeepTheMapsIrradianceAndDirection)
     }
 }
 
+TEST(SunExtraction, TheSkyStillShowsTheSun)
+{
+    // What extraction takes out of the texels lighting reads, the sky keeps (skyOnly): skyOf
+    // gives back the map as loaded, texel for texel, and so does a downscaled copy (the
+    // downscale of the map as loaded). Fails if extraction forgets what it took or the
+    // downscale drops it.
+    const SkyParams params;
+    const EnvironmentMap original = proceduralSky(params, 512);
+    EnvironmentMap map = original;
+    ASSERT_TRUE(extractSun(map).has_value());
+    ASSERT_FALSE(map.skyOnly.empty());
+    EXPECT_TRUE(original.skyOnly.empty());
+    EXPECT_FALSE(map.texels == original.texels);
+    const EnvironmentMap sky = skyOf(map);
+    EXPECT_TRUE(sky.texels == original.texels);
+    EXPECT_TRUE(sky.skyOnly.empty());
+    const EnvironmentMap small = downscaledToFit(map, 128), smallOriginal = downscaledToFit(original, 128);
+    ASSERT_EQ(small.width, 128);
+    EXPECT_FALSE(small.skyOnly.empty());
+    EXPECT_FALSE(small.texels == smallOriginal.texels);
+    EXPECT_TRUE(skyOf(small).texels == smallOriginal.texels);
+}
+
 TEST(SunExtraction, MapsWithoutASunAreLeftAlone)
 {
     // A constant environment has no peak; a studio's softboxes are bright but large.

@@ -50,7 +50,7 @@ void SkyboxPass::draw(const FrameContext& frame)
     state.useProgram(program(frame));
     // Depth 1 passes only where nothing was drawn (the clear value), and writes nothing.
     state.apply({.noDepthWrite = true, .depthCompare = gl::CompareOp::LessEqual, .cull = gl::CullMode::None});
-    state.bindTexture(0, ibl.cube());
+    state.bindTexture(0, ibl.sky());
     state.bindSampler(0, nullptr);
     state.bindVertexArray(frame.stores.emptyVertexArray);
     state.drawTriangles(3, false);
