@@ -18,6 +18,7 @@
 #include "gl/State.h"
 #include "platform/Context.h"
 #include "scene/Picking.h"
+#include "shading/SunExtraction.h"
 
 namespace specula::viewer {
 
@@ -53,9 +54,21 @@ void Viewer::loadScene(const std::string& name)
     const bool first = mSceneName.empty();
     scene::SceneDocument document = setup::loadSceneOrBuiltin(name, mOptions.load, mOptions.lights);
     render::FrameSettings settings = setup::resolveSettings(document, mOptions);
-    // The first scene brings its environment (or the command line's); a dropped scene keeps
-    // the one on screen.
-    std::optional<render::EnvironmentMap> environment = first ? setup::loadEnvironment(document, mOptions) : mEnvironment;
+    // The first scene brings its environment (or the command line's), and with --env-sun
+    // extract its sun's light; a dropped scene keeps the one on screen, and that light.
+    std::optional<render::EnvironmentMap> environment;
+    if (first) {
+        mExtractSun = setup::extractsSun(document, mOptions);
+        environment = setup::loadEnvironment(document, mOptions);
+        mSunRotation = settings.environment.rotationDegrees;
+        mSunIntensity = settings.environment.intensity;
+    } else {
+        environment = mEnvironment;
+        if (mEnvironment && mEnvironment->sun) {
+            const render::PlacedLight sun = setup::environmentSunLight(*mEnvironment->sun, mSunRotation, mSunIntensity);
+            scene::addLight(document.scene, sun.light, sun.position, sun.direction);
+        }
+    }
     int defaultLights = 0;
     setup::prepareView(document, mOptions, settings, &defaultLights, environment.has_value());
     mStartup.sceneLoad = load.elapsedMs();
@@ -100,11 +113,58 @@ void Viewer::loadScene(const std::string& name)
 void Viewer::loadEnvironment(const std::string& file)
 {
     render::EnvironmentMap map = file == "sky" ? render::proceduralSky() : render::loadEnvironmentMap(file);
+    if (mExtractSun) setup::extractEnvironmentSun(map, mSettings.environment.rotationDegrees, mSettings.environment.intensity);
     Stopwatch bake;
     setEnvironment(*mRenderer, map);
     log::info("environment {} ready in {:.0f} ms", file, bake.elapsedMs());
     mEnvironment = std::move(map);
     mEnvironmentName = file;
+    placeEnvironmentSun();
+}
+
+void Viewer::setSunExtraction(bool extract)
+{
+    mExtractSun = extract;
+    if (!mEnvironment || extract == mEnvironment->sun.has_value()) return;
+    render::EnvironmentMap map = *mEnvironment;
+    if (extract) {
+        if (!setup::extractEnvironmentSun(map, mSettings.environment.rotationDegrees, mSettings.environment.intensity)) return;
+    } else {
+        render::restoreSun(map);
+        log::info("--env-sun keep: the sun is back in the environment");
+    }
+    setEnvironment(*mRenderer, map);
+    mEnvironment = std::move(map);
+    placeEnvironmentSun();
+}
+
+void Viewer::placeEnvironmentSun()
+{
+    std::vector<render::PlacedLight> lights = currentLights(*mRenderer);
+    const size_t removed = std::erase_if(lights, [](const render::PlacedLight& l) { return l.light.name == setup::kEnvironmentSunName; });
+    mSunRotation = mSettings.environment.rotationDegrees;
+    mSunIntensity = mSettings.environment.intensity;
+    const bool sun = mEnvironment && mEnvironment->sun;
+    if (sun) lights.push_back(setup::environmentSunLight(*mEnvironment->sun, mSunRotation, mSunIntensity));
+    if (removed == 0 && !sun) return;
+    mRenderer->setLights(lights);
+    selectedLight = std::min(selectedLight, int(lights.size()) - 1);
+}
+
+void Viewer::followEnvironmentSun()
+{
+    const render::EnvironmentView& e = mSettings.environment;
+    if (!mEnvironment || !mEnvironment->sun || (e.rotationDegrees == mSunRotation && e.intensity == mSunIntensity)) return;
+    mSunRotation = e.rotationDegrees;
+    mSunIntensity = e.intensity;
+    const render::PlacedLight sun = setup::environmentSunLight(*mEnvironment->sun, mSunRotation, mSunIntensity);
+    for (int i = 0; i < mRenderer->lightCount(); ++i) {
+        render::PlacedLight light = mRenderer->light(i);
+        if (light.light.name != setup::kEnvironmentSunName) continue;
+        light.direction = sun.direction;
+        light.light.intensity = sun.light.intensity;
+        editLight(i, light);
+    }
 }
 
 void Viewer::openFile(const std::string& path)
@@ -164,6 +224,7 @@ void Viewer::renderFrame(float deltaSeconds)
     const glm::ivec2 size = mContext.framebufferSize();
     if (size.x <= 0 || size.y <= 0) return; // minimised
     advanceTimeline(deltaSeconds);
+    followEnvironmentSun();
     mSettings.width = size.x;
     mSettings.height = size.y;
     mSettings.autoExposure.deltaTime = deltaSeconds;

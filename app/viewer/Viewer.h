@@ -61,7 +61,16 @@ public:
 
     // Files. A failed load throws specula::Error and leaves the current scene or environment.
     void loadScene(const std::string& name);
+    /// A new environment: with the sun as a light (setSunExtraction), its sun is taken out and
+    /// replaces the last environment's sun light.
     void loadEnvironment(const std::string& file);
+    /// --env-sun extract|keep for the environment on screen and those loaded after it: its sun
+    /// taken out of the map and added as the light named setup::kEnvironmentSunName, or put
+    /// back (the light removed). That light follows the environment's rotation and intensity.
+    void setSunExtraction(bool extract);
+    bool sunExtraction() const { return mExtractSun; }
+    /// Whether the environment on screen has a sun taken out (and so its light).
+    bool environmentSunExtracted() const { return mEnvironment && mEnvironment->sun; }
     /// A dropped file: scene or environment by extension. Errors go to lastError().
     void openFile(const std::string& path);
 
@@ -161,6 +170,15 @@ private:
     /// Moves the timeline on by `deltaSeconds` when playing, and poses the scene when its
     /// animation or time changed since the last pose.
     void advanceTimeline(float deltaSeconds);
+    /// The renderer's lights with the environment's sun light (if any) replaced by the one for
+    /// mEnvironment's sun under the settings' rotation and intensity (none when it has no sun).
+    void placeEnvironmentSun();
+    /// Turns and scales the environment's sun light when the environment's rotation or
+    /// intensity changed since it was placed (an edit of the light's other fields stays).
+    void followEnvironmentSun();
+    bool mExtractSun = false;     ///< --env-sun extract, for environments loaded later too
+    float mSunRotation = 0.0f;    ///< the rotation and intensity the sun light was placed with
+    float mSunIntensity = 1.0f;
     std::optional<std::pair<int, float>> mPosed; ///< the pose the renderer holds
     int mVariant = -1;
     platform::Context& mContext;

@@ -349,6 +349,12 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         }
         return 0;
     }
+    if (a == "env-sun") {
+        const std::string mode = w.text(1);
+        if (mode != "extract" && mode != "keep") throw Error("env-sun wants extract or keep (got '{}')", mode);
+        viewer.setSunExtraction(mode == "extract");
+        return 0;
+    }
     if (a == "expect-error") {
         if (viewer.lastError.empty()) throw Error("expected the UI to show an error; it shows none");
         log::info("UI error: {}", viewer.lastError);

@@ -479,6 +479,11 @@ void environmentPanel(Viewer& viewer)
     if (ImGui::Button("load")) viewer.openFile(path.data());
     ImGui::TextDisabled("or drop a .hdr / .exr on the window");
     ImGui::Checkbox("image-based lighting", &e.lighting);
+    bool extract = viewer.sunExtraction();
+    if (ImGui::Checkbox("sun as a light", &extract)) viewer.setSunExtraction(extract);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("--env-sun extract: the map's sun taken out and added as the light \"%s\"%s", setup::kEnvironmentSunName,
+                          extract && !viewer.environmentSunExtracted() ? " (this map has none)" : "");
     if (ImGui::BeginCombo("specular", render::iblSpecularName(e.specular))) {
         for (auto mode : {render::IblSpecular::SplitSum, render::IblSpecular::Importance})
             if (ImGui::Selectable(render::iblSpecularName(mode), mode == e.specular)) e.specular = mode;

@@ -277,33 +277,53 @@ std::optional<render::EnvironmentMap> loadMap(const scene::SceneDocument& docume
 
 } // namespace
 
+bool extractsSun(const scene::SceneDocument& document, const FrameOptions& options)
+{
+    const std::string mode = options.envSun.value_or(document.environment.sun.value_or("keep"));
+    if (mode != "extract" && mode != "keep") throw Error("--env-sun must be extract or keep (got '{}')", mode);
+    return mode == "extract";
+}
+
+render::PlacedLight environmentSunLight(const render::ExtractedSun& sun, float rotationDegrees, float intensity)
+{
+    render::PlacedLight placed;
+    placed.light.name = kEnvironmentSunName;
+    placed.light.type = scene::Light::Type::Directional;
+    const float lux = std::max({sun.illuminance.r, sun.illuminance.g, sun.illuminance.b});
+    placed.light.intensity = lux * intensity;
+    placed.light.color = lux > 0.0f ? sun.illuminance / lux : glm::vec3(1.0f);
+    placed.light.angularDiameter = sun.angularDiameter;
+    // World direction: the environment turned by its rotation; the light points away from the sun.
+    placed.direction = -(render::environmentRotation(rotationDegrees) * sun.direction);
+    return placed;
+}
+
+bool extractEnvironmentSun(render::EnvironmentMap& map, float rotationDegrees, float intensity)
+{
+    const std::optional<render::ExtractedSun> sun = render::extractSun(map);
+    if (!sun) {
+        log::info("--env-sun extract: the environment has no sun (no compact region far brighter than the rest)");
+        return false;
+    }
+    const render::PlacedLight placed = environmentSunLight(*sun, rotationDegrees, intensity);
+    const glm::vec3 toSun = -placed.direction;
+    log::info("--env-sun extract: sun of {:.0f} lux, {:.2f}° across, {} texels, towards ({:.4f}, {:.4f}, {:.4f}) ({:.1f}° above "
+              "the horizon), now a directional light",
+              placed.light.intensity, glm::degrees(sun->angularDiameter), sun->texels, toSun.x, toSun.y, toSun.z,
+              glm::degrees(std::asin(std::clamp(toSun.y, -1.0f, 1.0f))));
+    return true;
+}
+
 std::optional<render::EnvironmentMap> loadEnvironment(scene::SceneDocument& document, const FrameOptions& options)
 {
     std::optional<render::EnvironmentMap> map = loadMap(document, options);
-    const std::string sunMode = options.envSun.value_or(document.environment.sun.value_or("keep"));
-    if (sunMode != "extract" && sunMode != "keep") throw Error("--env-sun must be extract or keep (got '{}')", sunMode);
-    if (!map || sunMode == "keep") return map;
-    const std::optional<render::ExtractedSun> sun = render::extractSun(*map);
-    if (!sun) {
-        log::info("--env-sun extract: the environment has no sun (no compact region far brighter than the rest)");
-        return map;
-    }
-    // World direction: the environment turned by its rotation; the light points away from the sun.
+    if (!extractsSun(document, options) || !map) return map;
     const float rotation = options.envRotation.value_or(document.environment.rotationDegrees);
     const float intensity = options.envIntensity.value_or(document.environment.intensity);
-    const glm::vec3 toSun = render::environmentRotation(rotation) * sun->direction;
-    scene::Light light;
-    light.name = "environment sun";
-    light.type = scene::Light::Type::Directional;
-    const float lux = std::max({sun->illuminance.r, sun->illuminance.g, sun->illuminance.b});
-    light.intensity = lux * intensity;
-    light.color = lux > 0.0f ? sun->illuminance / lux : glm::vec3(1.0f);
-    light.angularDiameter = sun->angularDiameter;
-    scene::addLight(document.scene, light, glm::vec3(0.0f), -toSun);
-    log::info("--env-sun extract: sun of {:.0f} lux, {:.2f}° across, {} texels, towards ({:.4f}, {:.4f}, {:.4f}) ({:.1f}° above "
-              "the horizon), now a directional light",
-              light.intensity, glm::degrees(sun->angularDiameter), sun->texels, toSun.x, toSun.y, toSun.z,
-              glm::degrees(std::asin(std::clamp(toSun.y, -1.0f, 1.0f))));
+    if (extractEnvironmentSun(*map, rotation, intensity)) {
+        const render::PlacedLight placed = environmentSunLight(*map->sun, rotation, intensity);
+        scene::addLight(document.scene, placed.light, placed.position, placed.direction);
+    }
     return map;
 }
 

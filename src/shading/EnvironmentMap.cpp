@@ -103,6 +103,7 @@ EnvironmentMap downscaledToFit(const EnvironmentMap& map, int maxSize)
             out.texels[size_t(y) * size_t(out.width) + size_t(x)] = glm::vec3(sum / double(int64_t(y1 - y0) * (x1 - x0)));
         }
     }
+    out.sun = map.sun;
     if (!map.skyOnly.empty()) {
         // The sky's texels downscaled the same way: those that differ from the lighting's.
         const EnvironmentMap sky = downscaledToFit(skyOf(map), maxSize);
@@ -117,6 +118,7 @@ EnvironmentMap skyOf(const EnvironmentMap& map)
     EnvironmentMap sky = map;
     for (const EnvironmentMap::SkyTexel& t : map.skyOnly) sky.texels[t.index] = t.radiance;
     sky.skyOnly.clear();
+    sky.sun.reset();
     return sky;
 }
 

@@ -7,12 +7,24 @@
 // degrees about +Y shows at world direction d what the file holds at Ry(-rotation) d.
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 namespace specula::render {
+
+/// A sun taken out of a map (shading/SunExtraction.h, --env-sun extract): the directional light
+/// that stands for it.
+struct ExtractedSun {
+    glm::vec3 direction{0.0f, 1.0f, 0.0f}; ///< towards the sun, environment space (unit)
+    glm::vec3 illuminance{0.0f};           ///< lux on a surface facing it, RGB
+    /// Radians: the disc with the region's second moment of angle about its centre (a uniform
+    /// disc of radius ρ has a mean θ² of ρ²/2), so a dim halo around the sun hardly widens it.
+    float angularDiameter = 0.0f;
+    int texels = 0;                        ///< texels the region covered
+};
 
 /// Equirectangular linear radiance, RGB 32-bit float, top row first.
 struct EnvironmentMap {
@@ -30,6 +42,9 @@ struct EnvironmentMap {
         glm::vec3 radiance;
     };
     std::vector<SkyTexel> skyOnly;
+    /// The sun taken out of `texels` (extractSun), in environment space: lighting must add it
+    /// back as a directional light (setup::environmentSunLight), turned and scaled with the map.
+    std::optional<ExtractedSun> sun;
 
     glm::vec3 at(int x, int y) const { return texels[size_t(y) * size_t(width) + size_t(x)]; }
     /// Bilinear lookup in direction d (environment space), wrapping in u.

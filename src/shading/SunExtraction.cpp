@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 #include <vector>
 
 #include <glm/gtc/constants.hpp>
 
 namespace specula::render {
 namespace {
+
+/// What extraction appends to the map's key (the bake cache keeps the two apart).
+constexpr std::string_view kExtractedMark = ":sun-extracted";
 
 float luminance(const glm::vec3& c)
 {
@@ -30,6 +34,7 @@ Texel texel(int x, int y, int w, int h)
 
 std::optional<ExtractedSun> extractSun(EnvironmentMap& map, const SunCriteria& criteria)
 {
+    if (map.sun) return map.sun; // taken out already
     const int w = map.width, h = map.height;
     if (w < 4 || h < 2) return std::nullopt;
     size_t peak = 0;
@@ -138,8 +143,19 @@ std::optional<ExtractedSun> extractSun(EnvironmentMap& map, const SunCriteria& c
     sun.illuminance = glm::vec3(illuminance);
     sun.angularDiameter = float(2.0 * std::sqrt(2.0 * secondMoment));
     sun.texels = int(region.size());
-    map.key += ":sun-extracted";
+    map.key += kExtractedMark;
+    map.sun = sun;
     return sun;
+}
+
+void restoreSun(EnvironmentMap& map)
+{
+    if (!map.sun) return;
+    for (const EnvironmentMap::SkyTexel& t : map.skyOnly) map.texels[t.index] = t.radiance;
+    map.skyOnly.clear();
+    map.sun.reset();
+    if (map.key.size() >= kExtractedMark.size() && map.key.compare(map.key.size() - kExtractedMark.size(), kExtractedMark.size(), kExtractedMark) == 0)
+        map.key.resize(map.key.size() - kExtractedMark.size());
 }
 
 } // namespace specula::render

@@ -12,15 +12,6 @@
 
 namespace specula::render {
 
-struct ExtractedSun {
-    glm::vec3 direction{0.0f, 1.0f, 0.0f}; ///< towards the sun, environment space (unit)
-    glm::vec3 illuminance{0.0f};           ///< lux on a surface facing it, RGB
-    /// Radians: the disc with the region's second moment of angle about its centre (a uniform
-    /// disc of radius ρ has a mean θ² of ρ²/2), so a dim halo around the sun hardly widens it.
-    float angularDiameter = 0.0f;
-    int texels = 0;                        ///< texels the region covered
-};
-
 /// What counts as a sun (docs/ibl.md#the-sun-as-a-light).
 struct SunCriteria {
     /// The peak must be this many times the median luminance 8–15° around it.
@@ -36,7 +27,11 @@ struct SunCriteria {
 /// Finds the sun of `map` and removes it (its texels set to the level around it, the excess
 /// becoming the light: the map's irradiance is kept to within the rounding of that level).
 /// The sky still shows it: the texels' radiance as it was goes to map.skyOnly.
-/// Nullopt, and `map` untouched, when nothing in it meets `criteria`.
+/// Nullopt, and `map` untouched, when nothing in it meets `criteria`; else the sun, also kept as
+/// map.sun (the light whoever shows the map must add). A map whose sun is out already: map.sun.
 std::optional<ExtractedSun> extractSun(EnvironmentMap& map, const SunCriteria& criteria = {});
+/// Undoes extractSun: the sun back in `map`'s texels, and map.sun, skyOnly and the key's mark
+/// gone. Nothing to do for a map without an extracted sun.
+void restoreSun(EnvironmentMap& map);
 
 } // namespace specula::render

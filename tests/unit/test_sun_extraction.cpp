@@ -116,6 +116,12 @@ TEST(SunExtraction, TheSkyStillShowsTheSun)
     EXPECT_FALSE(small.skyOnly.empty());
     EXPECT_FALSE(small.texels == smallOriginal.texels);
     EXPECT_TRUE(skyOf(small).texels == smallOriginal.texels);
+    // restoreSun undoes the extraction: the texels, the key (the bake cache's entry) and no sun.
+    restoreSun(map);
+    EXPECT_TRUE(map.texels == original.texels);
+    EXPECT_EQ(map.key, original.key);
+    EXPECT_FALSE(map.sun.has_value());
+    EXPECT_TRUE(map.skyOnly.empty());
 }
 
 TEST(SunExtraction, MapsWithoutASunAreLeftAlone)
