@@ -151,6 +151,7 @@ CommandLine::CommandLine()
     bakeCommand = app.add_subcommand("bake", "bake an environment for image-based lighting into the cache");
     bakeCommand->add_option("env", bake.env, "an equirectangular .hdr or .exr, or sky")->required();
     bakeCommand->add_option("--bake-preset", bake.preset, "default, or reference (the LearnOpenGL tutorial's bake sizes)");
+    bakeCommand->add_option("--env-sun", bake.envSun, "extract: bake the map less its sun, as render and view --env-sun extract read it; keep (default)");
     bakeCommand->add_option("--cache-dir", bake.cacheDirectory, "where to write (default: $SPECULA_CACHE_DIR, $XDG_CACHE_HOME/specula or ~/.cache/specula)");
 
     viewCommand = app.add_subcommand("view", "open a window on a scene, with panels (docs/viewer.md)");

@@ -29,6 +29,7 @@ struct BakeArgs {
     std::string env;
     std::string preset = "default";
     std::string cacheDirectory;
+    std::string envSun = "keep"; ///< extract: the map less its sun, the cache entry `--env-sun extract` reads
 };
 
 /// specula gallery: one tile per shading model (and BRDF term with `variants`), labelled.

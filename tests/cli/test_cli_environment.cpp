@@ -129,6 +129,26 @@ TEST(CliEnvironment, SunExtractionAndImportanceSampledSpecular)
     }
 }
 
+// `specula bake --env-sun extract` writes the entry that render --env-sun extract reads: the map
+// less its sun (its own cache key). Expected: render names bake's file as the one it read.
+// Fails if bake writes the whole map (the key without the extraction's mark).
+TEST(CliEnvironment, BakeWarmsTheExtractedSunsEntry)
+{
+    const std::string dir = tempDir("bakesun");
+    const auto bake = runCli("bake " + kEnv + "park_1k.hdr --env-sun extract");
+    ASSERT_EQ(bake.exitCode, 0) << bake.err;
+    const size_t at = bake.out.find(" /");
+    ASSERT_NE(at, std::string::npos) << bake.out;
+    const std::string file = bake.out.substr(at + 1, bake.out.find(' ', at + 1) - at - 1);
+    EXPECT_NE(file.find(":sun-extracted"), std::string::npos) << file;
+    const auto render = runCli("render --env " + kEnv + "park_1k.hdr --env-sun extract --width 32 --height 24 -o " + dir + "/sun.png");
+    ASSERT_EQ(render.exitCode, 0) << render.err;
+    EXPECT_NE(render.err.find("environment from the bake cache " + file), std::string::npos) << file << "\n" << render.err;
+    const auto bad = runCli("bake " + kEnv + "park_1k.hdr --env-sun maybe");
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_EQ(bad.errorLines(), 1) << bad.err;
+}
+
 // An environment wider than the GPU's texture limit (16384 on llvmpipe; the fuzzer's OpenEXR
 // file was 5,373,953 × 2) is downscaled with a warning before the bake uploads it, not a GL
 // error: it renders, exit 0.
