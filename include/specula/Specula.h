@@ -29,4 +29,5 @@
 #include "settings/PassSettings.h"
 #include "setup/SceneSetup.h"
 #include "shading/EnvironmentMap.h"
+#include "shading/SunExtraction.h"
 #include "shading/Tonemap.h"
