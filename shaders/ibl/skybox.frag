@@ -1,6 +1,6 @@
 #version 450 core
-// The environment behind the scene: the base cube (sharp) or, with SKYBOX_BLURRED, a
-// prefiltered level (render/passes/SkyboxPass).
+// The environment behind the scene: the sky's cube (sharp) or, with SKYBOX_BLURRED, a level of
+// its prefiltered chain (render/passes/SkyboxPass binds either to uSky).
 #include "../shared/Bindings.h"
 #include "../shared/FrameData.h"
 #include "../common/math.glsl"
@@ -17,7 +17,7 @@ void main()
     vec3 direction = normalize(vFarPoint.xyz / vFarPoint.w - frame.cameraPosition.xyz);
     vec3 d = toEnvironment(direction);
 #if defined(SKYBOX_BLURRED)
-    vec3 radiance = textureLod(uPrefiltered, d, environment.params.z).rgb; // params.z: the level, >= 0
+    vec3 radiance = textureLod(uSky, d, environment.params.z).rgb; // the prefiltered chain; params.z: the level, >= 0
 #else
     vec3 radiance = textureLod(uSky, d, 0.0).rgb;
 #endif

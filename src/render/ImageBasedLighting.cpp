@@ -40,7 +40,7 @@ std::string BakeSettings::key() const
     // levels; v4: with the count of the sources the specular lobe takes; v5: the bright sources the
     // irradiance cube can hold folded into it; v6: each source's spread; v7: the prefiltered
     // chain's level 0 not stored when it is the cube's; v8: the residual chain from level 1; v9:
-    // the sky's own cube when it shows what lighting does not, an extracted sun).
+    // the sky's own cube and chain when it shows what lighting does not, an extracted sun).
     const uint64_t shaders = fnv1a64(gl::loadShaderSource(gl::shaderRoot(), "ibl/equirect_to_cube.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/downsample.comp", {}).text +
                                      gl::loadShaderSource(gl::shaderRoot(), "ibl/prefilter.comp", {}).text +
@@ -171,6 +171,25 @@ bool readTexture(std::ifstream& in, gl::Texture& texture, const std::string& lab
     return true;
 }
 
+/// A cube and its prefiltered chain: the cube, a flag, then the chain, from level 1 when its
+/// level 0 is the cube's (the same size: the bake copies it) and the flag 1.
+void writeCubeAndChain(std::ostream& out, const gl::Texture& cube, const gl::Texture& chain)
+{
+    writeTextures(out, cube);
+    const int32_t levelZeroFromCube = chain.width() == cube.width() ? 1 : 0;
+    out.write(reinterpret_cast<const char*>(&levelZeroFromCube), sizeof levelZeroFromCube);
+    writeTextures(out, chain, levelZeroFromCube);
+}
+
+bool readCubeAndChain(std::ifstream& in, gl::Texture& cube, gl::Texture& chain, const std::string& cubeLabel, const std::string& chainLabel)
+{
+    int32_t levelZeroFromCube = -1;
+    return readTexture(in, cube, cubeLabel, gl::Format::RGBA16F, 4) &&
+           in.read(reinterpret_cast<char*>(&levelZeroFromCube), sizeof levelZeroFromCube) &&
+           (levelZeroFromCube == 0 || levelZeroFromCube == 1) &&
+           readTexture(in, chain, chainLabel, gl::Format::RGBA16F, 4, levelZeroFromCube ? &cube : nullptr);
+}
+
 void writeAtomically(const fs::path& file, const std::function<void(std::ostream&)>& write)
 {
     std::error_code ec;
@@ -264,7 +283,8 @@ struct BakeStep {
 };
 
 /// A bake's textures while it runs: slot 0 the map's, slot 1 the residual's, slot 2 the sky's
-/// (its base level only; no prefiltered chain). Slots 1 and 2 are empty when not needed.
+/// (a cube and chain as the map's, for the sharp and the blurred sky). Slots 1 and 2 are empty
+/// when not needed.
 using BakeSources = std::array<std::shared_ptr<const gl::Texture>, 3>;
 struct BakeJob {
     BakeSettings s;
@@ -297,8 +317,8 @@ struct ImageBasedLighting::Impl {
     // With brightSourcesSpecular: the cube less the bright sources, and the prefiltered chain's
     // levels from kResidualFirstLevel on made from it.
     gl::Texture residualCube, residualPrefiltered;
-    // The sky's cube (one level) where it shows what lighting does not (EnvironmentMap::skyOnly).
-    gl::Texture skyCube;
+    // The sky's cube and chain where it shows what lighting does not (EnvironmentMap::skyOnly).
+    gl::Texture skyCube, skyPrefiltered;
     int specularSources = 0; // the first this many bright sources; 0: none
     int analysedSpecularSources = 0; // what analyse found: specularSources once a bake has a residual
     /// The full bake still running after a preview (BakeMode::Progressive).
@@ -343,9 +363,8 @@ struct ImageBasedLighting::Impl {
         return withoutBrightSources(map, split, analysedSpecularSources);
     }
 
-    /// A bake's GPU work on the map (and on its residual, sources[1], when not null): the cubes,
-    /// then their prefiltered chains, and the sky's cube from sources[2] when not null, as steps
-    /// run in order (runStep). maxReads 0: one step per level, the bake at once; else steps of a
+    /// A bake's GPU work on the map (and on its residual, sources[1], and the sky's, sources[2],
+    /// when not null): the cubes, then their prefiltered chains, as steps run in order (runStep). maxReads 0: one step per level, the bake at once; else steps of a
     /// band of rows of one face, each about that many texture reads, for a bake spread over
     /// frames.
     std::unique_ptr<BakeJob> makeJob(const BakeSources& sources, const BakeSettings& s, double maxReads)
@@ -353,24 +372,29 @@ struct ImageBasedLighting::Impl {
         auto job = std::make_unique<BakeJob>();
         job->s = s;
         const bool withResidual = sources[1] && s.prefilterLevels > kResidualFirstLevel;
-        for (int slot = 0; slot < (withResidual ? 2 : 1); ++slot) {
+        static constexpr const char* kCubeLabels[3] = {"environment cube", "environment cube less its bright sources", "sky cube"};
+        static constexpr const char* kChainLabels[3] = {"prefiltered environment", "prefiltered environment less its bright sources",
+                                                        "prefiltered sky"};
+        static constexpr const char* kStagePrefixes[3] = {"", "residual ", "sky "};
+        for (int slot = 0; slot < 3; ++slot) {
+            if (!sources[size_t(slot)] || (slot == 1 && !withResidual)) continue;
             job->source[size_t(slot)] = sources[size_t(slot)];
             gl::TextureDesc cubeDesc;
             cubeDesc.type = gl::TextureType::Cube;
             cubeDesc.format = gl::Format::RGBA16F;
             cubeDesc.width = cubeDesc.height = s.cubeSize;
             cubeDesc.levels = 0;
-            cubeDesc.label = slot == 0 ? "environment cube" : "environment cube less its bright sources";
+            cubeDesc.label = kCubeLabels[slot];
             job->cube[size_t(slot)] = gl::Texture(cubeDesc);
             // Level 0 of the residual chain is the whole chain's kResidualFirstLevel.
-            const int first = slot == 0 ? 0 : kResidualFirstLevel;
+            const int first = slot == 1 ? kResidualFirstLevel : 0;
             gl::TextureDesc desc = cubeDesc;
             desc.width = desc.height = std::max(s.prefilterSize >> first, 1);
             desc.levels = s.prefilterLevels - first;
-            desc.label = slot == 0 ? "prefiltered environment" : "prefiltered environment less its bright sources";
+            desc.label = kChainLabels[slot];
             job->prefiltered[size_t(slot)] = gl::Texture(desc);
 
-            const std::string prefix = slot == 0 ? "" : "residual ";
+            const std::string prefix = kStagePrefixes[slot];
             BakeStep toCube{.op = BakeStep::Op::ToCube, .slot = slot, .stage = prefix + "cube"};
             addBands(*job, toCube, s.cubeSize, 1.0, maxReads);
             // The box-filtered mips: one step (every level, ibl/downsample.comp).
@@ -393,16 +417,6 @@ struct ImageBasedLighting::Impl {
                 }
                 addBands(*job, step, size, step.roughness > 0.0f ? double(s.prefilterSamples) : 1.0, maxReads);
             }
-        }
-        if (sources[2]) {
-            job->source[2] = sources[2];
-            gl::TextureDesc desc;
-            desc.type = gl::TextureType::Cube;
-            desc.format = gl::Format::RGBA16F;
-            desc.width = desc.height = s.cubeSize;
-            desc.label = "sky cube";
-            job->cube[2] = gl::Texture(desc);
-            addBands(*job, {.op = BakeStep::Op::ToCube, .slot = 2, .stage = "sky cube"}, s.cubeSize, 1.0, maxReads);
         }
         return job;
     }
@@ -516,15 +530,12 @@ struct ImageBasedLighting::Impl {
         residualCube = std::move(job->cube[1]);
         residualPrefiltered = std::move(job->prefiltered[1]);
         skyCube = std::move(job->cube[2]);
+        skyPrefiltered = std::move(job->prefiltered[2]);
         specularSources = residualCube ? analysedSpecularSources : 0;
         has = true;
         if (cacheFile.empty()) return;
         const auto write = [&](std::ostream& out) {
-            writeTextures(out, cube);
-            // The chain's level 0 is the cube's when they are the same size (the bake copies it).
-            const int32_t levelZeroFromCube = prefiltered.width() == cube.width() ? 1 : 0;
-            out.write(reinterpret_cast<const char*>(&levelZeroFromCube), sizeof levelZeroFromCube);
-            writeTextures(out, prefiltered, levelZeroFromCube);
+            writeCubeAndChain(out, cube, prefiltered);
             writeTextures(out, irradiance);
             out.write(reinterpret_cast<const char*>(sh.data()), sizeof(Sh9));
             writeBright(out, bright);
@@ -536,7 +547,7 @@ struct ImageBasedLighting::Impl {
             }
             const int32_t sky = skyCube ? 1 : 0;
             out.write(reinterpret_cast<const char*>(&sky), sizeof sky);
-            if (sky) writeTextures(out, skyCube);
+            if (sky) writeCubeAndChain(out, skyCube, skyPrefiltered);
         };
         if (!inBackground) {
             writeAtomically(cacheFile, write);
@@ -569,13 +580,14 @@ struct ImageBasedLighting::Impl {
                                                 gl::Format::RGBA16F, 4));
     }
 
-    /// The cache's sky cube (after the residual textures): a flag, then the cube when it is 1.
+    /// The cache's sky (after the residual textures): a flag, then its cube and chain when it is 1.
     bool readSky(std::ifstream& in)
     {
         int32_t flag = -1;
         skyCube = gl::Texture();
+        skyPrefiltered = gl::Texture();
         if (!in.read(reinterpret_cast<char*>(&flag), sizeof flag) || (flag != 0 && flag != 1)) return false;
-        return flag == 0 || readTexture(in, skyCube, "sky cube", gl::Format::RGBA16F, 4);
+        return flag == 0 || readCubeAndChain(in, skyCube, skyPrefiltered, "sky cube", "prefiltered sky");
     }
 
     /// The irradiance cube: the map reduced on the CPU (32-bit float), convolved on the GPU.
@@ -634,6 +646,7 @@ bool ImageBasedLighting::hasEnvironment() const { return mImpl->has; }
 const Sh9& ImageBasedLighting::sh() const { return mImpl->sh; }
 const gl::Texture& ImageBasedLighting::cube() const { return mImpl->cube; }
 const gl::Texture& ImageBasedLighting::sky() const { return mImpl->skyCube ? mImpl->skyCube : mImpl->cube; }
+const gl::Texture& ImageBasedLighting::skyPrefiltered() const { return mImpl->skyCube ? mImpl->skyPrefiltered : mImpl->prefiltered; }
 const gl::Texture& ImageBasedLighting::prefiltered() const { return mImpl->prefiltered; }
 const gl::Texture& ImageBasedLighting::irradiance() const { return mImpl->irradiance; }
 const std::vector<IrradianceSource>& ImageBasedLighting::brightSources() const { return mImpl->bright; }
@@ -667,11 +680,7 @@ BakeReport ImageBasedLighting::setEnvironment(gl::State& state, const Environmen
     if (!cacheDirectory.empty()) {
         report.cacheFile = cacheDirectory / fmt::format("env-{}-{}.bin", map.key, settings.key());
         std::ifstream in(report.cacheFile, std::ios::binary);
-        int32_t levelZeroFromCube = -1;
-        if (in && checkMagic(in) && readTexture(in, r.cube, "environment cube", gl::Format::RGBA16F, 4) &&
-            in.read(reinterpret_cast<char*>(&levelZeroFromCube), sizeof levelZeroFromCube) &&
-            (levelZeroFromCube == 0 || levelZeroFromCube == 1) &&
-            readTexture(in, r.prefiltered, "prefiltered environment", gl::Format::RGBA16F, 4, levelZeroFromCube ? &r.cube : nullptr) &&
+        if (in && checkMagic(in) && readCubeAndChain(in, r.cube, r.prefiltered, "environment cube", "prefiltered environment") &&
             readTexture(in, r.irradiance, "irradiance", gl::Format::RGBA16F, 4) &&
             in.read(reinterpret_cast<char*>(r.sh.data()), sizeof(Sh9)) && readBright(in, r.bright) && r.readResidual(in) &&
             r.readSky(in)) {

@@ -51,9 +51,10 @@ public:
     /// The cube lighting reads (the importance-sampled specular's source, with box mips).
     const gl::Texture& cube() const;
     /// The cube the sky shows: cube(), or, where the map's sky shows what lighting does not (an
-    /// extracted sun, EnvironmentMap::skyOnly), a cube of its own made from skyOf(map) (its
-    /// base level only).
+    /// extracted sun, EnvironmentMap::skyOnly), a cube of its own made from skyOf(map).
     const gl::Texture& sky() const;
+    /// The blurred sky's chain: prefiltered(), or the sky's own, baked as the map's is.
+    const gl::Texture& skyPrefiltered() const;
     const gl::Texture& prefiltered() const;
     /// E(n) in lux, kIrradianceSize² faces (shading/EnvironmentMap: the exact cosine
     /// convolution of the map, not its SH).

@@ -862,6 +862,21 @@ TEST_F(GlTest, SkyShowsTheExtractedSun)
                 extracted.skyOnly.size(), 100.0 * keepError, 100.0 * extractError);
     EXPECT_LT(keepError, 0.03);
     EXPECT_LT(extractError, 0.03);
+    // The blurred sky (a level of the prefiltered chain): the map as loaded, blurred, shows the
+    // sun's glow; with extract it must show the same, within 0.5 % (the chains are made from
+    // the same texels). Measured: identical. From the lighting's chain it is 95.7 % off.
+    settings.environment.skyboxBlur = 0.3f;
+    const ImageFloat keepBlurred = renderSky(original), extractBlurred = renderSky(extracted);
+    double blurSum = 0.0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const glm::vec3 a = pixel(keepBlurred, x, y), b = pixel(extractBlurred, x, y);
+            blurSum += std::abs(double(b.x + b.y + b.z) - double(a.x + a.y + a.z)) / double(a.x + a.y + a.z);
+        }
+    const double blurDifference = blurSum / double(size * size);
+    std::printf("blurred sky (0.3) at the sun: extract against keep, mean relative difference %.3f%%\n", 100.0 * blurDifference);
+    EXPECT_LT(blurDifference, 0.005);
+    settings.environment.skyboxBlur = 0.0f;
 
     // Lighting reads the map less its sun; the cache gives back both cubes.
     const fs::path cache = fs::temp_directory_path() / ("specula-sky-" + std::to_string(::getpid()));
@@ -877,8 +892,10 @@ TEST_F(GlTest, SkyShowsTheExtractedSun)
     EXPECT_FALSE(baked.sky().readFloat(0) == baked.cube().readFloat(0));
     render::ImageBasedLighting plain;
     plain.setEnvironment(state, original, bake);
-    EXPECT_EQ(&plain.sky(), &plain.cube()); // nothing taken out: one cube
+    EXPECT_EQ(&plain.sky(), &plain.cube()); // nothing taken out: one cube and chain
+    EXPECT_EQ(&plain.skyPrefiltered(), &plain.prefiltered());
     EXPECT_TRUE(plain.cube().readFloat(0) == baked.sky().readFloat(0));
+    EXPECT_TRUE(reread.skyPrefiltered().readFloat(2) == baked.skyPrefiltered().readFloat(2));
     fs::remove_all(cache);
 }
 

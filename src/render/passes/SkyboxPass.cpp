@@ -50,7 +50,8 @@ void SkyboxPass::draw(const FrameContext& frame)
     state.useProgram(program(frame));
     // Depth 1 passes only where nothing was drawn (the clear value), and writes nothing.
     state.apply({.noDepthWrite = true, .depthCompare = gl::CompareOp::LessEqual, .cull = gl::CullMode::None});
-    state.bindTexture(0, ibl.sky());
+    // The sky's own cube and chain: with an extracted sun they still show it (lighting's do not).
+    state.bindTexture(0, blurred(frame) ? ibl.skyPrefiltered() : ibl.sky());
     state.bindSampler(0, nullptr);
     state.bindVertexArray(frame.stores.emptyVertexArray);
     state.drawTriangles(3, false);
