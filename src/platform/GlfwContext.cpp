@@ -2,6 +2,10 @@
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
 
+#include <chrono>
+#include <cstdlib>
+#include <thread>
+
 #include "core/Error.h"
 #include "platform/Context.h"
 #include "platform/KeepDriverLoaded.h"
@@ -15,7 +19,19 @@ public:
     {
         keepDriverLoaded();
         glfwSetErrorCallback([](int, const char*) {});
-        if (!glfwInit()) throw Error("cannot open a window: GLFW could not initialise (is there a display?)");
+        bool initialised = glfwInit();
+        // A display that is named but refuses the connection for a moment (once in a CI run, an
+        // Xvfb busy with other test processes) is tried again, three times over 0.6 s.
+        const char* display = std::getenv("DISPLAY");
+        for (int attempt = 1; !initialised && display && *display && attempt <= 3; ++attempt) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(100 * attempt));
+            initialised = glfwInit();
+        }
+        if (!initialised) {
+            const char* reason = nullptr;
+            glfwGetError(&reason);
+            throw Error("cannot open a window: GLFW could not initialise ({}; is there a display?)", reason ? reason : "no reason given");
+        }
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
