@@ -364,9 +364,9 @@ struct ImageBasedLighting::Impl {
     }
 
     /// A bake's GPU work on the map (and on its residual, sources[1], and the sky's, sources[2],
-    /// when not null): the cubes, then their prefiltered chains, as steps run in order (runStep). maxReads 0: one step per level, the bake at once; else steps of a
-    /// band of rows of one face, each about that many texture reads, for a bake spread over
-    /// frames.
+    /// when not null): the cubes, then their prefiltered chains, as steps run in order
+    /// (runStep). maxReads 0: one step per level, the bake at once; else steps of a band of rows
+    /// of one face, each about that many texture reads, for a bake spread over frames.
     std::unique_ptr<BakeJob> makeJob(const BakeSources& sources, const BakeSettings& s, double maxReads)
     {
         auto job = std::make_unique<BakeJob>();
