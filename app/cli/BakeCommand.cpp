@@ -14,11 +14,10 @@ int runBake(const BakeArgs& args)
 {
     const auto preset = render::bakePreset(args.preset);
     if (!preset) throw Error("unknown --bake-preset '{}' (default, reference)", args.preset);
-    if (args.envSun != "extract" && args.envSun != "keep") throw Error("--env-sun must be extract or keep (got '{}')", args.envSun);
     render::EnvironmentMap map = args.env == "sky" ? render::proceduralSky() : render::loadEnvironmentMap(args.env);
     // The entry `--env-sun extract` reads: the map less its sun (the light's direction and lux
     // depend on the frame's rotation and intensity, not on the bake).
-    if (args.envSun == "extract") setup::extractEnvironmentSun(map, 0.0f, 1.0f);
+    if (setup::extractsSun(args.envSun)) setup::extractEnvironmentSun(map, 0.0f, 1.0f);
     const std::filesystem::path directory = args.cacheDirectory.empty() ? render::defaultCacheDirectory() : std::filesystem::path(args.cacheDirectory);
     auto context = platform::Context::createHeadless();
     gl::DebugMonitor debug;

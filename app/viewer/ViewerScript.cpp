@@ -350,9 +350,7 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
         return 0;
     }
     if (a == "env-sun") {
-        const std::string mode = w.text(1);
-        if (mode != "extract" && mode != "keep") throw Error("env-sun wants extract or keep (got '{}')", mode);
-        viewer.setSunExtraction(mode == "extract");
+        viewer.setSunExtraction(setup::extractsSun(w.text(1)));
         return 0;
     }
     if (a == "expect-error") {

@@ -20,8 +20,9 @@ public:
         keepDriverLoaded();
         glfwSetErrorCallback([](int, const char*) {});
         bool initialised = glfwInit();
-        // A display that is named but refuses the connection for a moment (once in a CI run, an
-        // Xvfb busy with other test processes) is tried again, three times over 0.6 s.
+        // A display that is named but refuses the connection is tried again, three times over
+        // 0.6 s: it happened once in a CI run under Xvfb, the tests before and after it fine
+        // (cause unknown; the error below now names GLFW's reason).
         const char* display = std::getenv("DISPLAY");
         for (int attempt = 1; !initialised && display && *display && attempt <= 3; ++attempt) {
             std::this_thread::sleep_for(std::chrono::milliseconds(100 * attempt));

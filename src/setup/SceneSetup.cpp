@@ -277,11 +277,15 @@ std::optional<render::EnvironmentMap> loadMap(const scene::SceneDocument& docume
 
 } // namespace
 
-bool extractsSun(const scene::SceneDocument& document, const FrameOptions& options)
+bool extractsSun(const std::string& mode)
 {
-    const std::string mode = options.envSun.value_or(document.environment.sun.value_or("keep"));
     if (mode != "extract" && mode != "keep") throw Error("--env-sun must be extract or keep (got '{}')", mode);
     return mode == "extract";
+}
+
+bool extractsSun(const scene::SceneDocument& document, const FrameOptions& options)
+{
+    return extractsSun(options.envSun.value_or(document.environment.sun.value_or("keep")));
 }
 
 render::PlacedLight environmentSunLight(const render::ExtractedSun& sun, float rotationDegrees, float intensity)
@@ -298,12 +302,12 @@ render::PlacedLight environmentSunLight(const render::ExtractedSun& sun, float r
     return placed;
 }
 
-bool extractEnvironmentSun(render::EnvironmentMap& map, float rotationDegrees, float intensity)
+std::optional<render::PlacedLight> extractEnvironmentSun(render::EnvironmentMap& map, float rotationDegrees, float intensity)
 {
     const std::optional<render::ExtractedSun> sun = render::extractSun(map);
     if (!sun) {
         log::info("--env-sun extract: the environment has no sun (no compact region far brighter than the rest)");
-        return false;
+        return std::nullopt;
     }
     const render::PlacedLight placed = environmentSunLight(*sun, rotationDegrees, intensity);
     const glm::vec3 toSun = -placed.direction;
@@ -311,7 +315,7 @@ bool extractEnvironmentSun(render::EnvironmentMap& map, float rotationDegrees, f
               "the horizon), now a directional light",
               placed.light.intensity, glm::degrees(sun->angularDiameter), sun->texels, toSun.x, toSun.y, toSun.z,
               glm::degrees(std::asin(std::clamp(toSun.y, -1.0f, 1.0f))));
-    return true;
+    return placed;
 }
 
 std::optional<render::EnvironmentMap> loadEnvironment(scene::SceneDocument& document, const FrameOptions& options)
@@ -320,10 +324,8 @@ std::optional<render::EnvironmentMap> loadEnvironment(scene::SceneDocument& docu
     if (!extractsSun(document, options) || !map) return map;
     const float rotation = options.envRotation.value_or(document.environment.rotationDegrees);
     const float intensity = options.envIntensity.value_or(document.environment.intensity);
-    if (extractEnvironmentSun(*map, rotation, intensity)) {
-        const render::PlacedLight placed = environmentSunLight(*map->sun, rotation, intensity);
-        scene::addLight(document.scene, placed.light, placed.position, placed.direction);
-    }
+    if (const auto placed = extractEnvironmentSun(*map, rotation, intensity))
+        scene::addLight(document.scene, placed->light, placed->position, placed->direction);
     return map;
 }
 

@@ -90,14 +90,15 @@ std::optional<render::EnvironmentMap> loadEnvironment(scene::SceneDocument& docu
 /// --env-sun (or the scene file's "sun"): whether the map's sun becomes a light. Throws Error
 /// for a word other than extract or keep.
 bool extractsSun(const scene::SceneDocument& document, const FrameOptions& options);
+bool extractsSun(const std::string& mode);
 /// The name of the light that stands for an environment's sun.
 inline constexpr const char* kEnvironmentSunName = "environment sun";
 /// The directional light that stands for `sun` (an extracted sun, EnvironmentMap::sun) under
 /// the environment turned by `rotationDegrees` and scaled by `intensity`: it follows both.
 render::PlacedLight environmentSunLight(const render::ExtractedSun& sun, float rotationDegrees, float intensity);
-/// Takes `map`'s sun out (render::extractSun) and logs what it found, its direction and lux
-/// under that rotation and intensity; false, and `map` untouched, when it has none.
-bool extractEnvironmentSun(render::EnvironmentMap& map, float rotationDegrees, float intensity);
+/// Takes `map`'s sun out (render::extractSun) and logs what it found; returns its light under
+/// that rotation and intensity (environmentSunLight), or nothing, `map` untouched, when it has none.
+std::optional<render::PlacedLight> extractEnvironmentSun(render::EnvironmentMap& map, float rotationDegrees, float intensity);
 /// Bake settings and cache directory for the frame (--bake-preset, --no-cache).
 render::BakeSettings resolveBakeSettings(const FrameOptions& options);
 std::filesystem::path cacheDirectory(const FrameOptions& options);
