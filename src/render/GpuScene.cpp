@@ -76,6 +76,35 @@ scene::Image downscaled(const scene::Image& source, int maxSize)
     return out;
 }
 
+/// Each slot's texture (scene::kMaterialTextures, in slot order): whether it holds sRGB colour,
+/// and the record's flag for it.
+struct SlotFormat {
+    bool srgb;
+    uint32_t flag;
+};
+constexpr std::array<SlotFormat, size_t(TextureSlot::Count)> kSlots{{
+    {true, SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE},
+    {false, SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE},
+    {false, SPECULA_MATERIAL_HAS_NORMAL_TEXTURE},
+    {false, SPECULA_MATERIAL_HAS_OCCLUSION_TEXTURE},
+    {true, SPECULA_MATERIAL_HAS_EMISSIVE_TEXTURE},
+    // Read only by the CLEARCOAT variant, which samples the first two always (white without
+    // one) and the normal map where the record's flag says there is one.
+    {false, 0u},
+    {false, 0u},
+    {false, SPECULA_MATERIAL_HAS_CLEARCOAT_NORMAL_TEXTURE},
+    // Read only by the SHEEN variant, which samples both always (white without one).
+    {true, 0u},
+    {false, 0u},
+    // Read only by the ANISOTROPY variant, where anisotropy.w says there is one (linear).
+    {false, 0u},
+    // Read only by the IRIDESCENCE variant, which samples both always (white without one:
+    // factor x 1, and the maximum thickness, as the extension says).
+    {false, 0u},
+    {false, 0u},
+}};
+static_assert(scene::kMaterialTextures.size() == kSlots.size(), "one slot for every texture of scene::Material");
+
 void packTransform(shared::GpuMaterial& gpu, int slot, const scene::TextureRef& ref)
 {
     // Rows of the 2x3 affine part of KHR_texture_transform's 3x3 matrix.
@@ -252,41 +281,16 @@ GpuScene::GpuScene(const scene::Scene& scene)
         if (m.alphaMode == scene::AlphaMode::Blend && m.baseColorTexture.valid())
             binding.opaqueTexels = opaqueAlpha(scene, m.baseColorTexture.image);
         binding.transmission = m.transmissionFactor;
-        const struct {
-            const scene::TextureRef& ref;
-            TextureSlot slot;
-            bool srgb;
-            uint32_t flag;
-        } slots[] = {
-            {m.baseColorTexture, TextureSlot::BaseColor, true, SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE},
-            {m.metallicRoughnessTexture, TextureSlot::MetallicRoughness, false, SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE},
-            {m.normalTexture, TextureSlot::Normal, false, SPECULA_MATERIAL_HAS_NORMAL_TEXTURE},
-            {m.occlusionTexture, TextureSlot::Occlusion, false, SPECULA_MATERIAL_HAS_OCCLUSION_TEXTURE},
-            {m.emissiveTexture, TextureSlot::Emissive, true, SPECULA_MATERIAL_HAS_EMISSIVE_TEXTURE},
-            // Read only by the CLEARCOAT variant, which samples the first two always (white
-            // without one) and the normal map where the record's flag says there is one.
-            {m.clearcoatTexture, TextureSlot::Clearcoat, false, 0u},
-            {m.clearcoatRoughnessTexture, TextureSlot::ClearcoatRoughness, false, 0u},
-            {m.clearcoatNormalTexture, TextureSlot::ClearcoatNormal, false, SPECULA_MATERIAL_HAS_CLEARCOAT_NORMAL_TEXTURE},
-            // Read only by the SHEEN variant, which samples both always (white without one).
-            {m.sheenColorTexture, TextureSlot::SheenColor, true, 0u},
-            {m.sheenRoughnessTexture, TextureSlot::SheenRoughness, false, 0u},
-            // Read only by the ANISOTROPY variant, where anisotropy.w says there is one (linear).
-            {m.anisotropyTexture, TextureSlot::Anisotropy, false, 0u},
-            // Read only by the IRIDESCENCE variant, which samples both always (white without one:
-            // factor x 1, and the maximum thickness, as the extension says).
-            {m.iridescenceTexture, TextureSlot::Iridescence, false, 0u},
-            {m.iridescenceThicknessTexture, TextureSlot::IridescenceThickness, false, 0u},
-        };
-        for (const auto& s : slots) {
-            if (!s.ref.valid()) continue;
-            const gl::Texture* tex = texture(scene, s.ref.image, s.srgb);
+        for (size_t slot = 0; slot < kSlots.size(); ++slot) {
+            const scene::TextureRef& ref = m.*scene::kMaterialTextures[slot];
+            if (!ref.valid()) continue;
+            const gl::Texture* tex = texture(scene, ref.image, kSlots[slot].srgb);
             if (!tex) continue;
-            binding.textures[size_t(s.slot)] = tex;
-            binding.samplers[size_t(s.slot)] = sampler(scene, s.ref.sampler);
-            gpu.flags.x |= s.flag;
-            packTransform(gpu, int(s.slot), s.ref);
-            if (s.slot == TextureSlot::Anisotropy) gpu.anisotropy.w = 1.0f;
+            binding.textures[slot] = tex;
+            binding.samplers[slot] = sampler(scene, ref.sampler);
+            gpu.flags.x |= kSlots[slot].flag;
+            packTransform(gpu, int(slot), ref);
+            if (TextureSlot(slot) == TextureSlot::Anisotropy) gpu.anisotropy.w = 1.0f;
         }
         if (m.doubleSided) gpu.flags.x |= SPECULA_MATERIAL_DOUBLE_SIDED;
         if (m.alphaMode == scene::AlphaMode::Mask) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_MASK;

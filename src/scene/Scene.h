@@ -2,6 +2,7 @@
 // A scene as plain data: what a glTF file or a scene file describes, with no GL in sight.
 // Units: lengths in metres; point and spot intensities in candela, directional in lux;
 // emissive in cd/m² (factor × strength); rendered values are radiance in cd/m².
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -146,16 +147,26 @@ struct Material {
     /// is a lit room's: full bright up close, darker with distance (255 never darkens).
     int sectorLight = 192;
 
-    /// Calls `f(TextureRef&)` for every texture the material samples.
+    /// Calls `f(TextureRef&)` for every texture the material samples (kMaterialTextures).
     template <typename F>
-    void forEachTexture(F&& f)
-    {
-        for (TextureRef* ref : {&baseColorTexture, &metallicRoughnessTexture, &normalTexture, &occlusionTexture,
-                                &emissiveTexture, &clearcoatTexture, &clearcoatRoughnessTexture, &clearcoatNormalTexture,
-                                &sheenColorTexture, &sheenRoughnessTexture})
-            f(*ref);
-    }
+    void forEachTexture(F&& f);
 };
+
+/// Every texture a material samples, in the order of render::TextureSlot (render/GpuScene.h
+/// checks the count): one list, so that nothing that walks a material's textures misses one.
+inline constexpr std::array kMaterialTextures{
+    &Material::baseColorTexture,  &Material::metallicRoughnessTexture,  &Material::normalTexture,
+    &Material::occlusionTexture,  &Material::emissiveTexture,           &Material::clearcoatTexture,
+    &Material::clearcoatRoughnessTexture, &Material::clearcoatNormalTexture, &Material::sheenColorTexture,
+    &Material::sheenRoughnessTexture, &Material::anisotropyTexture,     &Material::iridescenceTexture,
+    &Material::iridescenceThicknessTexture,
+};
+
+template <typename F>
+void Material::forEachTexture(F&& f)
+{
+    for (TextureRef Material::*member : kMaterialTextures) f(this->*member);
+}
 
 struct Vertex {
     glm::vec3 position{0.0f};

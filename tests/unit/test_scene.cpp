@@ -116,6 +116,8 @@ TEST(Scene, AppendShiftsIndices)
 
 // Every texture of an appended material (the clearcoat layer's too) follows its images, and
 // material variants of the same name become one, their mappings following their materials.
+// (The anisotropy and iridescence textures were missed once: a scene file's second model drew
+// the first model's images there.)
 TEST(Scene, AppendShiftsTexturesAndMergesVariantsByName)
 {
     auto model = [](std::vector<std::string> variants) {
@@ -124,6 +126,8 @@ TEST(Scene, AppendShiftsTexturesAndMergesVariantsByName)
         Material m;
         m.baseColorTexture.image = 0;
         m.clearcoatNormalTexture.image = 1;
+        m.anisotropyTexture.image = 1;
+        m.iridescenceThicknessTexture.image = 0;
         s.materials = {m, Material{}};
         Primitive p;
         p.vertices.resize(3);
@@ -139,6 +143,8 @@ TEST(Scene, AppendShiftsTexturesAndMergesVariantsByName)
     const Material& second = a.materials.at(2);
     EXPECT_EQ(second.baseColorTexture.image, 2);
     EXPECT_EQ(second.clearcoatNormalTexture.image, 3);
+    EXPECT_EQ(second.anisotropyTexture.image, 3);
+    EXPECT_EQ(second.iridescenceThicknessTexture.image, 2);
     const Primitive& appended = a.meshes.at(1).primitives.at(0);
     EXPECT_EQ(appended.material, 2);
     ASSERT_EQ(appended.variants.size(), 2u);
