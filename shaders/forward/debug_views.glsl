@@ -31,7 +31,7 @@ vec3 debugBrdfTerm(vec3 baseColor, float metallic, float perceptualRoughness, ve
     lightIlluminance(lightAt(0u), vWorldPosition, l);
     float NoL = dot(n, l);
     if (NoL <= 0.0) return vec3(0.0);
-    SurfaceBrdf s = makeSurfaceBrdf(baseColor, metallic, perceptualRoughness, material.specular);
+    SurfaceBrdf s = makeSurfaceBrdf(baseColor, metallic, perceptualRoughness, materialSpecular());
     vec3 h = normalize(v + l);
     float NoV = abs(dot(n, v));
     float NoH = saturate(dot(n, h));
@@ -66,10 +66,10 @@ vec3 debugBrdfTerm(vec3 baseColor, float metallic, float perceptualRoughness, ve
 // (forward/iridescence.glsl; the IRIDESCENCE variant stays on for this view), else F alone.
 vec3 debugIridescence(vec3 baseColor, float metallic, float perceptualRoughness, vec3 n, vec3 v)
 {
-    SurfaceBrdf s = makeSurfaceBrdf(baseColor, metallic, perceptualRoughness, material.specular);
+    SurfaceBrdf s = makeSurfaceBrdf(baseColor, metallic, perceptualRoughness, materialSpecular());
     float NoV = max(dot(n, v), 1e-4);
 #if defined(IRIDESCENCE)
-    return iridescentFresnelAt(s, makeIridescence(baseColor, metallic), NoV);
+    return iridescentFresnelAt(s, makeIridescence(baseColor, metallic, materialSpecular()), NoV);
 #else
     return brdfF(s, NoV);
 #endif

@@ -13,8 +13,9 @@ layout(binding = SPECULA_UNIT_IRIDESCENCE) uniform sampler2D uIridescenceTexture
 layout(binding = SPECULA_UNIT_IRIDESCENCE_THICKNESS) uniform sampler2D uIridescenceThicknessTexture;
 
 // The film of this fragment: factor x texture R; thickness mix(minimum, maximum, texture G)
-// (a white texture without one: the maximum, as the extension says).
-ThinFilm makeIridescence(vec3 baseColor, float metallic)
+// (a white texture without one: the maximum, as the extension says). `specular`:
+// materialSpecular() (forward/specular.glsl).
+ThinFilm makeIridescence(vec3 baseColor, float metallic, vec4 specular)
 {
     ThinFilm f;
     f.factor = saturate(material.iridescence.x * texture(uIridescenceTexture, textureUv(TEX_IRIDESCENCE)).r);
@@ -22,7 +23,7 @@ ThinFilm makeIridescence(vec3 baseColor, float metallic)
     f.thickness = mix(material.iridescence.z, material.iridescence.w,
                       texture(uIridescenceThicknessTexture, textureUv(TEX_IRIDESCENCE_THICKNESS)).g);
     // makeSurfaceBrdf's dielectric F0 (KHR_materials_specular and _ior included).
-    f.f0Dielectric = min(vec3(0.04) * material.specular.rgb, vec3(1.0)) * material.specular.a;
+    f.f0Dielectric = min(vec3(0.04) * specular.rgb, vec3(1.0)) * specular.a;
     f.f0Metal = baseColor;
     f.metallic = metallic;
     return f;

@@ -5,7 +5,9 @@
 // VERTEX_COLOR, ALPHA_MASK, ALPHA_BLEND (premultiplied output; BLEND_TRANSPARENT: specular and
 // emission unscaled by alpha), TRANSMISSION (forward/transmission.glsl), CLEARCOAT
 // (forward/clearcoat.glsl), SHEEN (forward/sheen.glsl), ANISOTROPY (forward/anisotropy.glsl),
-// IRIDESCENCE (forward/iridescence.glsl), DOUBLE_SIDED; OIT
+// IRIDESCENCE (forward/iridescence.glsl), SPECULAR_TEXTURES (forward/specular.glsl),
+// TRANSMISSION_TEXTURES (with TRANSMISSION: its factor and the volume's thickness times their
+// textures), DOUBLE_SIDED; OIT
 // (weighted blended transparency's two targets); per frame, SSAO, and DOOM_INDEXED (a
 // Doom frame: with SHADING_DOOM, the output is a palette index and a colour-map level, not a
 // colour; render/DoomPass). A material without a feature pays nothing for it; without
@@ -73,6 +75,7 @@ const float kHalfMax = 65504.0;
 #include "transmission.glsl"
 #endif
 #include "texture_uv.glsl"
+#include "specular.glsl"
 #if defined(CLEARCOAT)
 #include "clearcoat.glsl"
 #endif
@@ -212,7 +215,8 @@ void main()
     writeColor(vec4(min(shadeClassic(baseColor.rgb, metallic, perceptualRoughness, n, v, occlusion, materialEmissive()), vec3(kHalfMax)), 1.0) * alpha);
 #else
 
-    SurfaceBrdf surface = makeSurfaceBrdf(baseColor.rgb, metallic, perceptualRoughness, material.specular);
+    vec4 specular = materialSpecular();
+    SurfaceBrdf surface = makeSurfaceBrdf(baseColor.rgb, metallic, perceptualRoughness, specular);
 
     float NoV = max(dot(n, v), 1e-4); // 1e-4: normal-mapped texels can face away from the viewer
 #if defined(ANISOTROPY)
@@ -231,7 +235,7 @@ void main()
     vec3 sheenLight = vec3(0.0); // the sheen lobe's reflection, added over the scaled base
 #endif
 #if defined(IRIDESCENCE)
-    ThinFilm film = makeIridescence(baseColor.rgb, metallic);
+    ThinFilm film = makeIridescence(baseColor.rgb, metallic, specular);
 #endif
 
 #if defined(IBL) || defined(ENERGY_COMPENSATION)
@@ -389,7 +393,12 @@ void main()
     // by light from behind, tinted by the base colour and let through by the Fresnel factor at
     // the viewing angle, 1 − F(n·v) (Schlick with F0 from the ior; exact at normal incidence).
     float transmission = material.transmission.x * (1.0 - metallic);
-    vec3 behind = transmittedRadiance(n, v, vWorldPosition, material.transmission.y, material.transmission.z, iblRoughness);
+    float thickness = material.transmission.z;
+#if defined(TRANSMISSION_TEXTURES)
+    transmission *= texture(uTransmissionTexture, textureUv(TEX_TRANSMISSION)).r;
+    thickness *= texture(uThicknessTexture, textureUv(TEX_THICKNESS)).g;
+#endif
+    vec3 behind = transmittedRadiance(n, v, vWorldPosition, material.transmission.y, thickness, iblRoughness);
 #if defined(IRIDESCENCE)
     vec3 transmitted = transmission * iridescentDiffuseWeight(brdfF(surface, NoV), thinFilmFresnel(film, NoV), film.factor) * baseColor.rgb * behind;
 #else

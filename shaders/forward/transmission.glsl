@@ -6,6 +6,11 @@
 // blurred by roughness, is the light that comes through. Included by pbr.frag with TRANSMISSION.
 
 layout(binding = SPECULA_UNIT_TRANSMISSION) uniform sampler2D uTransmissionFrame;
+#if defined(TRANSMISSION_TEXTURES)
+// KHR_materials_transmission's texture (R) and KHR_materials_volume's (G): white without one.
+layout(binding = SPECULA_UNIT_TRANSMISSION_FACTOR) uniform sampler2D uTransmissionTexture;
+layout(binding = SPECULA_UNIT_THICKNESS) uniform sampler2D uThicknessTexture;
+#endif
 uniform mat4 uModel; // the vertex stage's: the volume's thickness is in object space
 
 // The Khronos sample viewer's applyIorToRoughness: a refraction of ior 1 does not spread a

@@ -33,11 +33,13 @@ struct GpuMaterial {
     vec4 emissive;        // rgb emissive factor x KHR_materials_emissive_strength, w Doom sector light / 255
     vec4 params;          // x metallic, y perceptual roughness, z normal scale, w occlusion strength
     vec4 alpha;           // x alpha cutoff
-    uvec4 flags;          // x SPECULA_MATERIAL_* bits; y texCoord sets, 2 bits per texture
-                          // (base colour, metallic-roughness, normal, occlusion, emissive,
-                          // clearcoat, clearcoat roughness, clearcoat normal, sheen colour,
-                          // sheen roughness, anisotropy, iridescence, iridescence thickness: 13)
-    vec4 uvTransform[26]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
+    uvec4 flags;          // x SPECULA_MATERIAL_* bits; y, z texCoord sets, 2 bits per texture, y
+                          // for textures 0-15, z for 16 on (render::TextureSlot: base colour,
+                          // metallic-roughness, normal, occlusion, emissive, clearcoat, clearcoat
+                          // roughness, clearcoat normal, sheen colour, sheen roughness, anisotropy,
+                          // iridescence, iridescence thickness, specular, specular colour,
+                          // transmission, thickness: 17)
+    vec4 uvTransform[34]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
     vec4 specular;        // KHR_materials_specular: rgb specularColorFactor, a specularFactor; rgb also
                           // carries KHR_materials_ior: x (F0(ior) / 0.04), so 0.04 x rgb is the dielectric F0
     vec4 phong;           // Phong, Blinn-Phong, Gouraud, flat: rgb dielectric specular colour ks,
@@ -58,5 +60,9 @@ struct GpuMaterial {
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::GpuMaterial) == 39 * 16);
+static_assert(sizeof(specula::shared::GpuMaterial) == 47 * 16);
+// Feature bits above the record's 32, in render::MaterialBinding::features only: which of an
+// extension's textures a variant samples (the record needs no flag for them).
+#define SPECULA_MATERIAL_SPECULAR_TEXTURES (uint64_t(1) << 32)     // KHR_materials_specular's
+#define SPECULA_MATERIAL_TRANSMISSION_TEXTURES (uint64_t(1) << 33) // KHR_materials_transmission's and _volume's
 #endif

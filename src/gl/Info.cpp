@@ -62,6 +62,13 @@ int maxTextureUnits()
     return value;
 }
 
+int maxCombinedTextureUnits()
+{
+    GLint value = 0;
+    glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &value);
+    return value;
+}
+
 int maxColorSamples()
 {
     GLint samples = 0;

@@ -23,6 +23,8 @@ DeviceInfo queryDeviceInfo();
 /// GL_MAX_COLOR_TEXTURE_SAMPLES and GL_MAX_DEPTH_TEXTURE_SAMPLES of the current context.
 /// GL_MAX_TEXTURE_IMAGE_UNITS: texture units of a fragment shader (GL 4.5 promises 16).
 int maxTextureUnits();
+/// GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS: the units a sampler may name, all stages together.
+int maxCombinedTextureUnits();
 int maxColorSamples();
 int maxDepthSamples();
 

@@ -16,7 +16,7 @@ namespace {
 // An extension's texture slots are bound only for the variant that samples them.
 bool sampledByVariant(const MaterialBinding& m, TextureSlot slot)
 {
-    const auto has = [&](uint32_t bit) { return (m.features & bit) != 0; };
+    const auto has = [&](uint64_t bit) { return (m.features & bit) != 0; };
     switch (slot) {
     case TextureSlot::Clearcoat:
     case TextureSlot::ClearcoatRoughness:
@@ -26,6 +26,10 @@ bool sampledByVariant(const MaterialBinding& m, TextureSlot slot)
     case TextureSlot::Anisotropy: return has(SPECULA_MATERIAL_ANISOTROPY);
     case TextureSlot::Iridescence:
     case TextureSlot::IridescenceThickness: return has(SPECULA_MATERIAL_IRIDESCENCE);
+    case TextureSlot::Specular:
+    case TextureSlot::SpecularColor: return has(SPECULA_MATERIAL_SPECULAR_TEXTURES);
+    case TextureSlot::Transmission:
+    case TextureSlot::Thickness: return has(SPECULA_MATERIAL_TRANSMISSION_TEXTURES);
     default: return true;
     }
 }

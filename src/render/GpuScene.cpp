@@ -102,6 +102,14 @@ constexpr std::array<SlotFormat, size_t(TextureSlot::Count)> kSlots{{
     // factor x 1, and the maximum thickness, as the extension says).
     {false, 0u},
     {false, 0u},
+    // Read only by the SPECULAR_TEXTURES variant (A, and sRGB colour), which samples both
+    // (white without one).
+    {false, 0u},
+    {true, 0u},
+    // Read only by the TRANSMISSION_TEXTURES variant (R, and G), which samples both (white
+    // without one).
+    {false, 0u},
+    {false, 0u},
 }};
 static_assert(scene::kMaterialTextures.size() == kSlots.size(), "one slot for every texture of scene::Material");
 
@@ -111,7 +119,7 @@ void packTransform(shared::GpuMaterial& gpu, int slot, const scene::TextureRef& 
     const glm::mat3 m = ref.transform.matrix();
     gpu.uvTransform[2 * slot] = glm::vec4(m[0][0], m[1][0], m[2][0], 0.0f);
     gpu.uvTransform[2 * slot + 1] = glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f);
-    gpu.flags.y |= uint32_t(ref.texCoord & 3) << (2 * slot);
+    (slot < 16 ? gpu.flags.y : gpu.flags.z) |= uint32_t(ref.texCoord & 3) << (2 * (slot % 16));
 }
 
 struct SharedLodChain {
@@ -149,6 +157,10 @@ int textureUnit(TextureSlot slot)
     case TextureSlot::Anisotropy: return SPECULA_UNIT_ANISOTROPY;
     case TextureSlot::Iridescence: return SPECULA_UNIT_IRIDESCENCE;
     case TextureSlot::IridescenceThickness: return SPECULA_UNIT_IRIDESCENCE_THICKNESS;
+    case TextureSlot::Specular: return SPECULA_UNIT_SPECULAR;
+    case TextureSlot::SpecularColor: return SPECULA_UNIT_SPECULAR_COLOR;
+    case TextureSlot::Transmission: return SPECULA_UNIT_TRANSMISSION_FACTOR;
+    case TextureSlot::Thickness: return SPECULA_UNIT_THICKNESS;
     default: return int(slot);
     }
 }
@@ -281,6 +293,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         if (m.alphaMode == scene::AlphaMode::Blend && m.baseColorTexture.valid())
             binding.opaqueTexels = opaqueAlpha(scene, m.baseColorTexture.image);
         binding.transmission = m.transmissionFactor;
+        uint64_t textureFeatures = 0; // the extension textures' variants (MaterialData.h)
         for (size_t slot = 0; slot < kSlots.size(); ++slot) {
             const scene::TextureRef& ref = m.*scene::kMaterialTextures[slot];
             if (!ref.valid()) continue;
@@ -291,6 +304,10 @@ GpuScene::GpuScene(const scene::Scene& scene)
             gpu.flags.x |= kSlots[slot].flag;
             packTransform(gpu, int(slot), ref);
             if (TextureSlot(slot) == TextureSlot::Anisotropy) gpu.anisotropy.w = 1.0f;
+            if (TextureSlot(slot) == TextureSlot::Specular || TextureSlot(slot) == TextureSlot::SpecularColor)
+                textureFeatures |= SPECULA_MATERIAL_SPECULAR_TEXTURES;
+            if (TextureSlot(slot) == TextureSlot::Transmission || TextureSlot(slot) == TextureSlot::Thickness)
+                textureFeatures |= SPECULA_MATERIAL_TRANSMISSION_TEXTURES;
         }
         if (m.doubleSided) gpu.flags.x |= SPECULA_MATERIAL_DOUBLE_SIDED;
         if (m.alphaMode == scene::AlphaMode::Mask) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_MASK;
@@ -308,7 +325,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         if (m.anisotropyStrength > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_ANISOTROPY;
         if (m.iridescenceFactor > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_IRIDESCENCE;
         // The shading model and BRDF terms select the variant too (not read by the shaders).
-        binding.features = gpu.flags.x | packShading(m.shading);
+        binding.features = gpu.flags.x | packShading(m.shading) | textureFeatures;
         gpuMaterials.push_back(gpu);
         mRecordMaterial.push_back(int(mMaterials.size()));
         mMaterials.push_back(binding);
@@ -380,7 +397,9 @@ GpuScene::GpuScene(const scene::Scene& scene)
         copy.flags.x |= SPECULA_MATERIAL_USE_VERTEX_COLOR;
         gpuMaterials.push_back(copy);
         mMaterials.push_back(mMaterials[size_t(material)]);
-        mMaterials.back().features = copy.flags.x | (mMaterials[size_t(material)].features & kShadingFeatureMask);
+        // The copy's record flags; the shading choice and the texture bits above them stay.
+        constexpr uint64_t kRecordFlags = 0xffffffffu & ~uint64_t(kShadingFeatureMask);
+        mMaterials.back().features = copy.flags.x | (mMaterials[size_t(material)].features & ~kRecordFlags);
         mRecordMaterial.push_back(mRecordMaterial[size_t(material)]);
         return found->second;
     };
@@ -535,7 +554,7 @@ void GpuScene::updateCoverage(size_t record)
     const scene::AlphaMode mode = opaque ? scene::AlphaMode::Opaque : binding.declaredAlphaMode;
     // The variant key: no blending, or the record's (the declared blend mode: setBlendMode).
     constexpr uint32_t blendBits = SPECULA_MATERIAL_ALPHA_BLEND | SPECULA_MATERIAL_BLEND_TRANSPARENT;
-    binding.features = (binding.features & ~blendBits) | (opaque ? 0u : r.flags.x & blendBits);
+    binding.features = (binding.features & ~uint64_t(blendBits)) | (opaque ? 0u : r.flags.x & blendBits);
     binding.alphaMode = mode;
 }
 
@@ -549,8 +568,8 @@ void GpuScene::setShading(int material, const scene::MaterialShading& shading)
 {
     for (size_t record = 0; record < mMaterials.size(); ++record) {
         if (mRecordMaterial[record] != material) continue;
-        uint32_t& features = mMaterials[record].features;
-        features = (features & ~kShadingFeatureMask) | packShading(shading);
+        uint64_t& features = mMaterials[record].features;
+        features = (features & ~uint64_t(kShadingFeatureMask)) | packShading(shading);
     }
 }
 
@@ -574,8 +593,8 @@ void GpuScene::setFeature(int material, uint32_t bit, bool on)
     for (size_t record = 0; record < mMaterials.size(); ++record) {
         if (mRecordMaterial[record] != material) continue;
         MaterialBinding& binding = mMaterials[record];
-        binding.features = on ? binding.features | bit : binding.features & ~bit;
-        mRecords[record].flags.x = (mRecords[record].flags.x & ~bit) | (binding.features & bit);
+        binding.features = on ? binding.features | bit : binding.features & ~uint64_t(bit);
+        mRecords[record].flags.x = (mRecords[record].flags.x & ~bit) | uint32_t(binding.features & bit);
         mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
                                &mRecords[record].flags.x);
     }

@@ -46,6 +46,8 @@ enum class TextureSlot {
     SheenColor, SheenRoughness,                     ///< KHR_materials_sheen (SHEEN variant only)
     Anisotropy,                                     ///< KHR_materials_anisotropy (ANISOTROPY variant only)
     Iridescence, IridescenceThickness,              ///< KHR_materials_iridescence (IRIDESCENCE variant only)
+    Specular, SpecularColor,                        ///< KHR_materials_specular (SPECULAR_TEXTURES variant only)
+    Transmission, Thickness,                        ///< KHR_materials_transmission, _volume (TRANSMISSION_TEXTURES only)
     Count
 };
 /// The texture unit of each slot (shaders/shared/Bindings.h): the first five are units 0-4.
@@ -68,9 +70,11 @@ struct MaterialBinding {
     bool opaqueTexels = true;
     bool doubleSided = false;
     float transmission = 0.0f; ///< KHR_materials_transmission factor
-    /// SPECULA_MATERIAL_* bits: selects the shader variant, and which extension texture units
-    /// the draw binds (DrawList: clearcoat 19-21, sheen 22-23, anisotropy 24, iridescence 25-26)
-    uint32_t features = 0;
+    /// SPECULA_MATERIAL_* bits (the record's 32, the shading choice's, and the extension
+    /// textures' above them): selects the shader variant, and which extension texture units the
+    /// draw binds (DrawList: clearcoat 19-21, sheen 22-23, anisotropy 24, iridescence 25-26,
+    /// specular 30-31, transmission and thickness 32-33)
+    uint64_t features = 0;
 };
 
 /// The shadow rule for surfaces light passes through (docs/transparency.md): a surface casts

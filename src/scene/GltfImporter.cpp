@@ -32,11 +32,11 @@ constexpr std::string_view kSupportedExtensions[] = {
     "KHR_materials_sheen", // the sheen lobe (Material::sheen*)
     "KHR_materials_ior",      // F0 of the dielectric part (Material::ior)
     "KHR_materials_iridescence", // the thin film (Material::iridescence*)
-    "KHR_materials_specular", // factors; its textures are ignored
-    "KHR_materials_transmission", // factor; its texture is ignored (docs/transparency.md)
+    "KHR_materials_specular", // the dielectric F0 and F90: factors and textures (Material::specular*)
+    "KHR_materials_transmission", // factor and texture (Material::transmission*; docs/transparency.md)
     "KHR_materials_unlit",    // the unlit shading model (Material::shading)
     "KHR_materials_variants", // material variants (Scene::variants, Primitive::variants; --variant)
-    "KHR_materials_volume",       // thickness and attenuation factors; its texture is ignored
+    "KHR_materials_volume",       // thickness (factor and texture) and attenuation (Material::thickness, attenuation*)
     "KHR_mesh_quantization", // integer attributes: the accessor reader handles every component type
     "KHR_texture_transform",
     // Textures carry a DDS source in the extension; we use their plain `source` when there is

@@ -262,6 +262,8 @@ void Importer::convertMaterials()
                 color && color->IsArray() && color->ArrayLen() == 3)
                 for (int c = 0; c < 3; ++c)
                     if (color->Get(c).IsNumber()) material.specularColorFactor[c] = float(std::max(color->Get(c).GetNumberAsDouble(), 0.0));
+            material.specularTexture = extensionTexture(*specular, "specularTexture", where);
+            material.specularColorTexture = extensionTexture(*specular, "specularColorTexture", where);
         }
         // KHR_materials_ior: 1.5 (the default) is F0 = 0.04 exactly; 0 means "no
         // interface" in the extension (transmission-only), which has no F0 here: left unset.
@@ -269,12 +271,11 @@ void Importer::convertMaterials()
             const double value = number(*ior, "ior").value_or(1.5);
             if (value >= 1.0 && value != 1.5) material.ior = float(value);
         }
-        // KHR_materials_transmission and KHR_materials_volume (factors; their textures are not
-        // read and say so). Volume without transmission changes nothing (the extension's rule).
+        // KHR_materials_transmission and KHR_materials_volume. Volume without transmission
+        // changes nothing (the extension's rule).
         if (const tinygltf::Value* transmission = extension(source.extensions, "KHR_materials_transmission")) {
             material.transmissionFactor = float(std::clamp(number(*transmission, "transmissionFactor").value_or(0.0), 0.0, 1.0));
-            if (member(*transmission, "transmissionTexture"))
-                warn("{} has a transmissionTexture, which is not read; its transmissionFactor is used", where);
+            material.transmissionTexture = extensionTexture(*transmission, "transmissionTexture", where);
         }
         if (const tinygltf::Value* volume = extension(source.extensions, "KHR_materials_volume")) {
             material.thickness = float(std::max(number(*volume, "thicknessFactor").value_or(0.0), 0.0));
@@ -285,8 +286,7 @@ void Importer::convertMaterials()
                 color && color->IsArray() && color->ArrayLen() == 3)
                 for (int c = 0; c < 3; ++c)
                     if (color->Get(c).IsNumber()) material.attenuationColor[c] = float(std::clamp(color->Get(c).GetNumberAsDouble(), 0.0, 1.0));
-            if (member(*volume, "thicknessTexture"))
-                warn("{} has a thicknessTexture, which is not read; its thicknessFactor is used", where);
+            material.thicknessTexture = extensionTexture(*volume, "thicknessTexture", where);
         }
         // KHR_materials_dispersion: 20 / V_d; it spreads the refraction through a volume.
         if (const tinygltf::Value* dispersion = extension(source.extensions, "KHR_materials_dispersion")) {

@@ -76,10 +76,13 @@ struct Material {
     float roughnessFactor = 1.0f; ///< perceptual roughness; α = roughness²
     glm::vec3 emissiveFactor{0.0f};
     float emissiveStrength = 1.0f; ///< KHR_materials_emissive_strength
-    /// KHR_materials_specular (factors only): scales the dielectric F0 and F90; 0 leaves a
-    /// pure Lambertian dielectric.
+    /// KHR_materials_specular: the dielectric's F0 = min(F0(ior) x specular colour, 1) x specular
+    /// and its F90 = specular, the colour being the factor x specularColorTexture's RGB (sRGB)
+    /// and the specular the factor x specularTexture's A; 0 leaves a pure Lambertian dielectric.
     float specularFactor = 1.0f;
     glm::vec3 specularColorFactor{1.0f};
+    TextureRef specularTexture;      ///< A
+    TextureRef specularColorTexture; ///< sRGB
     float normalScale = 1.0f;
     float occlusionStrength = 1.0f;
     AlphaMode alphaMode = AlphaMode::Opaque;
@@ -87,12 +90,16 @@ struct Material {
     BlendMode blendMode = BlendMode::Fade; ///< AlphaMode::Blend only
     bool doubleSided = false;
     /// KHR_materials_transmission: the fraction of light that passes through the dielectric
-    /// part instead of being scattered diffusely (0 = none: an ordinary surface).
+    /// part instead of being scattered diffusely (0 = none: an ordinary surface), times
+    /// transmissionTexture's R.
     float transmissionFactor = 0.0f;
+    TextureRef transmissionTexture; ///< R
     /// KHR_materials_volume: thickness of the volume under the surface in object-space metres
-    /// (0 = thin-walled: light passes straight through), and its Beer–Lambert attenuation:
-    /// light keeps attenuationColor after attenuationDistance metres (0 = infinite: no loss).
+    /// (0 = thin-walled: light passes straight through), times thicknessTexture's G, and its
+    /// Beer–Lambert attenuation: light keeps attenuationColor after attenuationDistance metres
+    /// (0 = infinite: no loss).
     float thickness = 0.0f;
+    TextureRef thicknessTexture; ///< G
     float attenuationDistance = 0.0f;
     glm::vec3 attenuationColor{1.0f};
     /// KHR_materials_dispersion: 20 / the Abbe number V_d (0 = none). A volume's red, green and
@@ -159,7 +166,8 @@ inline constexpr std::array kMaterialTextures{
     &Material::occlusionTexture,  &Material::emissiveTexture,           &Material::clearcoatTexture,
     &Material::clearcoatRoughnessTexture, &Material::clearcoatNormalTexture, &Material::sheenColorTexture,
     &Material::sheenRoughnessTexture, &Material::anisotropyTexture,     &Material::iridescenceTexture,
-    &Material::iridescenceThicknessTexture,
+    &Material::iridescenceThicknessTexture, &Material::specularTexture, &Material::specularColorTexture,
+    &Material::transmissionTexture, &Material::thicknessTexture,
 };
 
 template <typename F>

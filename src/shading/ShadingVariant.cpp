@@ -16,7 +16,7 @@ uint32_t packField(const std::optional<E>& value, int field)
 }
 
 template <typename E>
-std::optional<E> unpackField(uint32_t features, int field)
+std::optional<E> unpackField(uint64_t features, int field)
 {
     const uint32_t v = (features >> (kShift + kBits * uint32_t(field))) & kFieldMask;
     if (v == 0) return std::nullopt;
@@ -37,7 +37,7 @@ uint32_t packShading(const scene::MaterialShading& s)
            packField(s.diffuse, 4);
 }
 
-scene::MaterialShading unpackShading(uint32_t features)
+scene::MaterialShading unpackShading(uint64_t features)
 {
     scene::MaterialShading s;
     s.model = unpackField<scene::ShadingModel>(features, 0);
@@ -53,7 +53,7 @@ bool anisotropic(const ResolvedShading& shading)
     return shading.model == scene::ShadingModel::Pbr && shading.distribution == scene::BrdfDistribution::GGX;
 }
 
-ResolvedShading resolveShading(const scene::MaterialShading& frame, scene::BrdfGeometry defaultGeometry, uint32_t features)
+ResolvedShading resolveShading(const scene::MaterialShading& frame, scene::BrdfGeometry defaultGeometry, uint64_t features)
 {
     const scene::MaterialShading material = unpackShading(features);
     ResolvedShading r;

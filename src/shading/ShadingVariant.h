@@ -22,7 +22,7 @@ struct ResolvedShading {
 /// SPECULA_MATERIAL_* feature bits stay below.
 constexpr uint32_t kShadingFeatureMask = 0x7fff0000u;
 uint32_t packShading(const scene::MaterialShading& shading);
-scene::MaterialShading unpackShading(uint32_t features);
+scene::MaterialShading unpackShading(uint64_t features);
 
 /// Whether KHR_materials_anisotropy's lobe applies: the physically based model with GGX's D
 /// (the extension defines no other); elsewhere the material stays isotropic.
@@ -31,6 +31,6 @@ bool anisotropic(const ResolvedShading& shading);
 /// The frame's override, else the material's choice, else the frame's default geometry and
 /// the glTF BRDF.
 ResolvedShading resolveShading(const scene::MaterialShading& frameOverride, scene::BrdfGeometry defaultGeometry,
-                               uint32_t features);
+                               uint64_t features);
 
 } // namespace specula::render

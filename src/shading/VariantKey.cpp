@@ -27,6 +27,8 @@ constexpr uint64_t kBlendTransparent = uint64_t(1) << 39, kTransmission = uint64
 constexpr uint64_t kClearcoat = uint64_t(1) << 42;
 constexpr uint64_t kSheen = uint64_t(1) << 43, kAnisotropy = uint64_t(1) << 44, kIridescence = uint64_t(1) << 45;
 constexpr uint64_t kDispersion = uint64_t(1) << 46;
+// The extension textures a variant samples (after LIGHT_COUNT's field, bits 52-56).
+constexpr uint64_t kSpecularTextures = uint64_t(1) << 57, kTransmissionTextures = uint64_t(1) << 58;
 // The kinds of light a frame has not; then LIGHT_CONSTANTS (bit 19: the debug view's field was
 // there while it had 4 bits).
 constexpr uint64_t kNoDirectional = 1u << 16, kNoPoint = 1u << 17, kNoSpot = 1u << 18, kLightConstants = 1u << 19;
@@ -118,11 +120,13 @@ constexpr std::array kTable = {
     VariantDefine{kSheen, kSheen, "SHEEN", K::MaterialFeature},
     VariantDefine{kAnisotropy, kAnisotropy, "ANISOTROPY", K::MaterialFeature},
     VariantDefine{kIridescence, kIridescence, "IRIDESCENCE", K::MaterialFeature},
+    VariantDefine{kSpecularTextures, kSpecularTextures, "SPECULAR_TEXTURES", K::MaterialFeature},
+    VariantDefine{kTransmissionTextures, kTransmissionTextures, "TRANSMISSION_TEXTURES", K::MaterialFeature},
     VariantDefine{kOit, kOit, "OIT", K::FrameFeature},
 };
 static_assert((kFeatureMask & (kIbl | kIblImportance | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
 static_assert(((kNoDirectional | kNoPoint | kNoSpot) & (kFeatureMask | kIbl | kIblImportance | kLightsAll | kModelMask)) == 0);
-static_assert((kLightCountMask & (kDebugMask | kDispersion | kIridescence)) == 0 && kLightCountShift + kLightCountBits <= 64);
+static_assert((kLightCountMask & (kDebugMask | kDispersion | kIridescence)) == 0 && kLightCountShift + kLightCountBits <= 57);
 static_assert(uint64_t(kLastDebugView) < (uint64_t(1) << 5)); // the debug field's 5 bits
 static_assert((kDebugMask & (kBlendTransparent | kTransmission | kOit | kClearcoat | kSheen | kAnisotropy | kIridescence | kDispersion)) == 0);
 static_assert(((kShadowTapsMask | kShadowFilterMask) & (kBlendTransparent | kTransmission | kOit)) == 0);
@@ -140,7 +144,7 @@ bool isMaterialDebugView(DebugView view)
     return view != DebugView::None && view != DebugView::Ssao && view != DebugView::Bloom && view != DebugView::ShadowAtlas;
 }
 
-ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& shading, DebugView debugView, IblVariant ibl,
+ForwardVariant ForwardVariant::make(uint64_t features, const ResolvedShading& shading, DebugView debugView, IblVariant ibl,
                                     bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows,
                                     const LightVariant& lights, bool oit)
 {
@@ -156,7 +160,14 @@ ForwardVariant ForwardVariant::make(uint32_t features, const ResolvedShading& sh
             key |= kTransmission;
             // KHR_materials_dispersion: three refractions, one per channel, where a volume has it.
             if (features & SPECULA_MATERIAL_DISPERSION) key |= kDispersion;
+            // The transmission and thickness textures scale their factors.
+            if (features & SPECULA_MATERIAL_TRANSMISSION_TEXTURES) key |= kTransmissionTextures;
         }
+        // KHR_materials_specular's textures: the dielectric's F0 and F90, in the lit frame and in
+        // the views that show Fresnel; an indexed Doom frame reads only the colour.
+        const bool fresnelView = debugView == DebugView::BrdfF || debugView == DebugView::Iridescence;
+        if ((features & SPECULA_MATERIAL_SPECULAR_TEXTURES) && !doomIndexed && (!isMaterialDebugView(debugView) || fresnelView))
+            key |= kSpecularTextures;
         // KHR_materials_clearcoat: the layer, in the lit frame and in its own debug views.
         const bool coatView = debugView == DebugView::Clearcoat || debugView == DebugView::ClearcoatNormal;
         if ((features & SPECULA_MATERIAL_CLEARCOAT) && !doomIndexed && (!isMaterialDebugView(debugView) || coatView)) key |= kClearcoat;

@@ -79,7 +79,7 @@ struct ForwardVariant {
     /// its key holds none and variants that differ only there share one program. `shadows`:
     /// the frame's shadow maps (SHADOWS and SHADOW_*: lights/shadow.glsl samples them).
     /// `lights`: the frame's kinds of light, LIGHTS_ALL and LIGHT_COUNT. `oit`: blended draws write weighted blended OIT's targets (OIT).
-    static ForwardVariant make(uint32_t features, const ResolvedShading& shading, DebugView debugView, IblVariant ibl,
+    static ForwardVariant make(uint64_t features, const ResolvedShading& shading, DebugView debugView, IblVariant ibl,
                                bool energyCompensation, bool ssao, bool doomIndexed, const ShadowVariant& shadows = {},
                                const LightVariant& lights = {}, bool oit = false);
 

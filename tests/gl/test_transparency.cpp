@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -16,6 +17,7 @@
 #include "render/GpuScene.h"
 #include "render/Renderer.h"
 #include "scene/DemoScenes.h"
+#include "scene/GltfImporter.h"
 #include "scene/Procedural.h"
 #include "shading/Brdf.h"
 
@@ -311,6 +313,48 @@ TEST_F(GlTest, TransparencyVolumeAttenuatesByBeerLambert)
             }
         EXPECT_GT(tested, 300);
     }
+}
+
+// tests/assets/gltf/transmission_quad.gltf (make_transmission.py): the transmission factor 0.9 x
+// transmissionTexture's R (128 on the left half, 255 on the right) and the volume's thickness
+// 0.5 x thicknessTexture's G (255 left, 64 right, through texCoord 1 and KHR_texture_transform),
+// attenuation colour c after d = 0.25 m, over a uniform backdrop L with no light: each pixel is
+// T (1 − F(n·v)) c^(t/d) L (Schlick, F0 0.04; the refracted ray still meets the backdrop).
+// Broken on purpose (2026-12-07), each failed: the TRANSMISSION_TEXTURES variant reading neither
+// texture; the thickness read from R; the uv sets of textures 16 on (the thickness texture's)
+// read from the first word of uv sets (GpuMaterial::flags.y, not .z); every uv set taken as 0.
+TEST_F(GlTest, TransparencyTransmissionAndThicknessTexturesFromGltf)
+{
+    scene::Scene s = scene::loadGltf(std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/transmission_quad.gltf");
+    ASSERT_EQ(s.materials.size(), 1u);
+    const dvec3 L(3.0), c(0.9, 0.5, 0.2);
+    const double d = 0.25;
+    addBackdrop(s, glm::vec3(L), false);
+    const render::View view = frontView();
+    const ImageFloat image = renderScene(s, view, exactSettings());
+    const double transmission[2] = {0.9 * 128.0 / 255.0, 0.9}, thickness[2] = {0.5, 0.5 * 64.0 / 255.0};
+    const glm::dvec3 eye(0.0, 0.0, 4.0);
+    int tested = 0;
+    double textureMatters = 0.0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const auto hit = hitQuad(pixelRay(view, x, y, kSize, kSize), glm::dmat4(facingZ(glm::mat4(1.0f))), 0.97);
+            if (!hit || std::abs(hit->x) < 0.03) continue; // the edges and the texel seam
+            const int texel = hit->x < 0.0 ? 0 : 1;
+            const double NoV = glm::normalize(eye - *hit).z;
+            const double F = 0.04 + 0.96 * std::pow(1.0 - NoV, 5.0);
+            const auto through = [&](int t) { return transmission[t] * (1.0 - F) * glm::pow(c, dvec3(thickness[t] / d)) * L; };
+            const dvec3 want = through(texel), swapped = through(1 - texel), got = pixel(image, x, y);
+            ++tested;
+            for (int ch = 0; ch < 3; ++ch) {
+                const double tolerance = kTransmissionRelative * want[ch] + kAbsolute;
+                ASSERT_LE(std::abs(got[ch] - want[ch]), tolerance)
+                    << "pixel (" << x << ", " << y << ") channel " << ch << ": " << got[ch] << ", expected T (1 - F) c^(t/d) L = " << want[ch];
+                textureMatters = std::max(textureMatters, std::abs(swapped[ch] - want[ch]) / tolerance);
+            }
+        }
+    EXPECT_GT(tested, 1000);
+    EXPECT_GT(textureMatters, 3.0); // the other half's texels would be far outside
 }
 
 // A smooth sphere of IOR 1 (no interface: F0 = 0) bends nothing: it is invisible but for its

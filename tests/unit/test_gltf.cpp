@@ -1775,6 +1775,46 @@ TEST(GltfExtensions, SheenFieldsAndTextures)
     EXPECT_EQ(scene.images.at(1).pixels[3], 153);
 }
 
+// tests/assets/gltf/specular_quad.gltf and transmission_quad.gltf (make_specular.py,
+// make_transmission.py): KHR_materials_specular's, KHR_materials_transmission's and
+// KHR_materials_volume's textures with their factors, texCoord 1 and a transform, no warning
+// (the transmission and thickness textures were once ignored with a warning).
+TEST(GltfExtensions, SpecularTransmissionAndThicknessTextures)
+{
+    const Scene specular = loadGltf(kTestAssets / "specular_quad.gltf");
+    EXPECT_TRUE(specular.warnings.empty()) << (specular.warnings.empty() ? "" : specular.warnings[0]);
+    ASSERT_EQ(specular.materials.size(), 1u);
+    const Material& s = specular.materials[0];
+    EXPECT_FLOAT_EQ(s.specularFactor, 0.9f);
+    EXPECT_EQ(s.specularColorFactor, glm::vec3(1.0f, 0.8f, 0.6f));
+    ASSERT_TRUE(s.ior.has_value());
+    EXPECT_FLOAT_EQ(*s.ior, 1.7f);
+    ASSERT_TRUE(s.specularTexture.valid());
+    ASSERT_TRUE(s.specularColorTexture.valid());
+    EXPECT_EQ(s.specularTexture.image, 0);
+    EXPECT_EQ(s.specularTexture.texCoord, 0);
+    EXPECT_EQ(s.specularColorTexture.image, 1);
+    EXPECT_EQ(s.specularColorTexture.texCoord, 1);
+    EXPECT_EQ(s.specularColorTexture.transform.offset, glm::vec2(0.5f, 0.0f));
+    EXPECT_EQ(specular.images.at(0).pixels.at(3), 64); // texel 0's alpha
+    EXPECT_EQ(specular.images.at(0).pixels.at(7), 230);
+
+    const Scene transmission = loadGltf(kTestAssets / "transmission_quad.gltf");
+    EXPECT_TRUE(transmission.warnings.empty()) << (transmission.warnings.empty() ? "" : transmission.warnings[0]);
+    ASSERT_EQ(transmission.materials.size(), 1u);
+    const Material& t = transmission.materials[0];
+    EXPECT_FLOAT_EQ(t.transmissionFactor, 0.9f);
+    EXPECT_FLOAT_EQ(t.thickness, 0.5f);
+    EXPECT_FLOAT_EQ(t.attenuationDistance, 0.25f);
+    ASSERT_TRUE(t.transmissionTexture.valid());
+    ASSERT_TRUE(t.thicknessTexture.valid());
+    EXPECT_EQ(t.transmissionTexture.image, 0);
+    EXPECT_EQ(t.transmissionTexture.texCoord, 0);
+    EXPECT_EQ(t.thicknessTexture.image, 1);
+    EXPECT_EQ(t.thicknessTexture.texCoord, 1);
+    EXPECT_EQ(t.thicknessTexture.transform.offset, glm::vec2(0.5f, 0.0f));
+}
+
 TEST(GltfExtensions, SheenDefaultsAndClamps)
 {
     // The extension's defaults (colour black: no sheen, roughness 0) and factors outside [0, 1].

@@ -187,3 +187,29 @@ TEST(VariantKey, LightsCompileInOnlyTheKindsAndTheCountOfAFewLights)
     EXPECT_NE(ForwardVariant::make(0, {}, DebugView::None, IblVariant::None, false, false, false, {}, {.all = true, .count = 3}).key,
               ForwardVariant::make(0, {}, DebugView::None, IblVariant::None, false, false, false, {}, {.all = true, .count = 4}).key);
 }
+
+// The extension textures' bits live above the record's 32 (MaterialBinding::features): the
+// SPECULAR_TEXTURES variant for the lit frame and the views that show Fresnel, never for a Doom
+// frame's indices or the other views; TRANSMISSION_TEXTURES only with TRANSMISSION.
+TEST(VariantKey, ExtensionTexturesAboveTheRecordsBits)
+{
+    const auto make = [](uint64_t features, DebugView d, bool doom = false) {
+        return ForwardVariant::make(features, {}, d, IblVariant::None, false, false, doom).defines();
+    };
+    const auto has = [](const std::vector<std::string>& defines, const char* define) {
+        return std::find(defines.begin(), defines.end(), define) != defines.end();
+    };
+    const uint64_t specular = SPECULA_MATERIAL_SPECULAR_TEXTURES;
+    EXPECT_TRUE(has(make(specular, DebugView::None), "SPECULAR_TEXTURES"));
+    EXPECT_TRUE(has(make(specular, DebugView::BrdfF), "SPECULAR_TEXTURES"));
+    EXPECT_TRUE(has(make(specular, DebugView::Iridescence), "SPECULAR_TEXTURES"));
+    EXPECT_FALSE(has(make(specular, DebugView::BaseColor), "SPECULAR_TEXTURES"));
+    EXPECT_FALSE(has(make(specular, DebugView::None, true), "SPECULAR_TEXTURES"));
+    EXPECT_FALSE(has(make(0u, DebugView::None), "SPECULAR_TEXTURES"));
+    // Above bit 31: the record's flags alone never carry them.
+    EXPECT_EQ(uint32_t(specular | SPECULA_MATERIAL_TRANSMISSION_TEXTURES), 0u);
+    const uint64_t transmission = SPECULA_MATERIAL_TRANSMISSION | SPECULA_MATERIAL_TRANSMISSION_TEXTURES;
+    EXPECT_TRUE(has(make(transmission, DebugView::None), "TRANSMISSION_TEXTURES"));
+    EXPECT_FALSE(has(make(SPECULA_MATERIAL_TRANSMISSION_TEXTURES, DebugView::None), "TRANSMISSION_TEXTURES"));
+    EXPECT_FALSE(has(make(transmission, DebugView::Normal), "TRANSMISSION_TEXTURES"));
+}

@@ -209,11 +209,11 @@ struct ForwardPass::Impl {
         return p;
     }
 
-    ForwardProgram& program(const FrameContext& frame, uint32_t features)
+    ForwardProgram& program(const FrameContext& frame, uint64_t features)
     {
         const FrameSettings& s = frame.settings;
         if (s.blendModeOverride && (features & SPECULA_MATERIAL_ALPHA_BLEND)) {
-            features &= ~uint32_t(SPECULA_MATERIAL_BLEND_TRANSPARENT);
+            features &= ~uint64_t(SPECULA_MATERIAL_BLEND_TRANSPARENT);
             if (*s.blendModeOverride == scene::BlendMode::Transparent) features |= SPECULA_MATERIAL_BLEND_TRANSPARENT;
         }
         const ResolvedShading shading = resolveShading(s.materialOverride, s.brdfGeometry, features);

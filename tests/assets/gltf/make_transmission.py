@@ -1,0 +1,69 @@
+# Writes transmission_quad.gltf (run in this directory; the output is committed).
+# One 2 x 2 quad facing +Z (normals +Z), a white smooth dielectric that lets light through
+# (KHR_materials_transmission) into a volume (KHR_materials_volume), both scaled by textures, so
+# that every texel is known exactly (tests/gl/test_transparency.cpp):
+#   transmissionFactor 0.9 x transmissionTexture R: a 2 x 1 RGB PNG, texel 0 (128, 255, 0),
+#   texel 1 (255, 64, 0), sampled NEAREST through texCoord 0: texel 0 on the quad's left half
+#   (x < 0), texel 1 on its right.
+#   thicknessFactor 0.5 x thicknessTexture G: a second 2 x 1 RGB PNG, texel 0 (64, 255, 0),
+#   texel 1 (255, 64, 0), through texCoord 1 (u1 = 1 - u0, v1 = v0) and KHR_texture_transform
+#   offset (0.5, 0): texel 0 on the left half too (either the transform or the texCoord alone
+#   would swap them); attenuation colour (0.9, 0.5, 0.2) after 0.25 m.
+# Read with the wrong channel (G for the transmission, R for the thickness) either texture
+# gives other values on both halves.
+import base64, json, struct, zlib
+
+def png(pixels, width, channels):
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
+    raw = b"\0" + bytes(pixels)
+    colour = {3: 2, 4: 6}[channels]
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, 1, 8, colour, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+def uri(data, mime):
+    return "data:%s;base64,%s" % (mime, base64.b64encode(data).decode())
+
+pos = [-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0]
+nrm = [0, 0, 1] * 4
+uv0 = [0, 1, 1, 1, 1, 0, 0, 0]
+uv1 = [1, 1, 0, 1, 0, 0, 1, 0]
+idx = [0, 1, 2, 0, 2, 3]
+def pack(fmt, v): return struct.pack("<%d%s" % (len(v), fmt), *v)
+views = [pack("f", pos), pack("f", nrm), pack("f", uv0), pack("f", uv1), pack("H", idx)]
+buf = b""; bv = []
+for k, v in enumerate(views):
+    while len(buf) % 4: buf += b"\0"
+    bv.append({"buffer": 0, "byteOffset": len(buf), "byteLength": len(v), "target": 34963 if k == 4 else 34962}); buf += v
+acc = [
+    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
+    {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+    {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
+    {"bufferView": 3, "componentType": 5126, "count": 4, "type": "VEC2"},
+    {"bufferView": 4, "componentType": 5123, "count": 6, "type": "SCALAR"},
+]
+doc = {
+    "asset": {"version": "2.0", "generator": "Specula tests/assets/gltf/make_transmission.py"},
+    "extensionsUsed": ["KHR_materials_transmission", "KHR_materials_volume", "KHR_texture_transform"],
+    "scene": 0, "scenes": [{"nodes": [0]}],
+    "nodes": [{"mesh": 0, "name": "quad"}],
+    "meshes": [{"name": "quad", "primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2, "TEXCOORD_1": 3},
+                                                 "indices": 4, "material": 0}]}],
+    "materials": [{
+        "name": "tinted glass",
+        "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.0},
+        "extensions": {
+            "KHR_materials_transmission": {"transmissionFactor": 0.9, "transmissionTexture": {"index": 0}},
+            "KHR_materials_volume": {
+                "thicknessFactor": 0.5,
+                "thicknessTexture": {"index": 1, "texCoord": 1,
+                                     "extensions": {"KHR_texture_transform": {"offset": [0.5, 0.0]}}},
+                "attenuationDistance": 0.25, "attenuationColor": [0.9, 0.5, 0.2]}}}],
+    "samplers": [{"magFilter": 9728, "minFilter": 9728}],
+    "textures": [{"source": 0, "sampler": 0}, {"source": 1, "sampler": 0}],
+    "images": [{"name": "transmission", "mimeType": "image/png", "uri": uri(png([128, 255, 0, 255, 64, 0], 2, 3), "image/png")},
+               {"name": "thickness", "mimeType": "image/png", "uri": uri(png([64, 255, 0, 255, 64, 0], 2, 3), "image/png")}],
+    "accessors": acc, "bufferViews": bv,
+    "buffers": [{"byteLength": len(buf), "uri": uri(buf, "application/octet-stream")}],
+}
+open("transmission_quad.gltf", "w").write(json.dumps(doc, indent=1) + "\n")
