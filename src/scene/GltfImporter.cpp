@@ -21,6 +21,7 @@ namespace fs = std::filesystem;
 
 /// Extensions we honour, so a file may list them as required and is not warned about them.
 constexpr std::string_view kSupportedExtensions[] = {
+    "EXT_mesh_gpu_instancing", // each instance a child node of its node (GltfImporter.cpp, meshInstances)
     "EXT_meshopt_compression",    // bufferViews decoded with meshoptimizer (GltfCompression.cpp)
     "EXT_texture_webp",           // WebP images decoded with libwebp (GltfMaterials.cpp)
     "KHR_draco_mesh_compression", // primitives decoded with Draco (GltfCompression.cpp)
@@ -254,6 +255,14 @@ void Importer::convertLights()
 
 void Importer::convertNodes()
 {
+    // EXT_mesh_gpu_instancing: each instance becomes a child node of its node that holds the
+    // mesh (the node's own transform then the instance's, as the extension says), added after
+    // the file's nodes so that their indices (animations, skins, scenes) stay.
+    struct Instances {
+        int node;
+        std::vector<Node> children;
+    };
+    std::vector<Instances> instanced;
     for (size_t i = 0; i < mModel.nodes.size(); ++i) {
         const tinygltf::Node& source = mModel.nodes[i];
         const auto where = fmt::format("node {}", i);
@@ -303,7 +312,20 @@ void Importer::convertNodes()
             at(mModel.nodes, child, "node", where);
             node.children.push_back(child);
         }
+        if (const tinygltf::Value* instancing = extension(source.extensions, "EXT_mesh_gpu_instancing"))
+            instanced.push_back({int(i), meshInstances(*instancing, node, where)});
         mScene.nodes.push_back(std::move(node));
+    }
+    for (Instances& instances : instanced) {
+        Node& node = mScene.nodes[size_t(instances.node)];
+        if (instances.children.empty()) continue;
+        node.mesh = -1; // drawn by its instances only
+        node.skin = -1;
+        node.weights.clear();
+        for (Node& child : instances.children) {
+            mScene.nodes[size_t(instances.node)].children.push_back(int(mScene.nodes.size()));
+            mScene.nodes.push_back(std::move(child));
+        }
     }
 
     // The glTF 2.0 spec (Nodes and Hierarchy): nodes form disjoint strict trees. Check it, so nothing downstream
@@ -330,6 +352,50 @@ void Importer::convertNodes()
     }
     for (size_t i = 0; i < reached.size(); ++i)
         if (!reached[i]) fail("node {} is part of a cycle in the node hierarchy", i);
+}
+
+std::vector<Node> Importer::meshInstances(const tinygltf::Value& instancing, const Node& node, std::string_view where)
+{
+    const auto name = fmt::format("{} EXT_mesh_gpu_instancing", where);
+    if (node.mesh < 0) {
+        warn("{} has EXT_mesh_gpu_instancing but no mesh; the extension is ignored there", where);
+        return {};
+    }
+    const tinygltf::Value* attributes = member(instancing, "attributes");
+    if (!attributes || !attributes->IsObject()) fail("{} has no \"attributes\" object", name);
+    // Each attribute is optional; those given must agree on the count (the extension's rule).
+    std::optional<size_t> count;
+    const auto attribute = [&](const char* key, int components) -> std::optional<AccessorData<float>> {
+        const auto index = integer(*attributes, key);
+        if (!index) return std::nullopt;
+        const auto what = fmt::format("{} {}", name, key);
+        AccessorData<float> data = read<float>(*index, what);
+        if (data.components != components) fail("{} has {} components per element instead of {}", what, data.components, components);
+        if (count && *count != data.count) fail("{} has {} elements where the other attributes have {}", what, data.count, *count);
+        count = data.count;
+        return data;
+    };
+    const auto translation = attribute("TRANSLATION", 3), rotation = attribute("ROTATION", 4), scale = attribute("SCALE", 3);
+    if (!count) fail("{} names none of TRANSLATION, ROTATION and SCALE", name);
+    std::vector<Node> instances(*count);
+    for (size_t k = 0; k < instances.size(); ++k) {
+        Node& instance = instances[k];
+        instance.name = fmt::format("{} instance {}", node.name.empty() ? std::string(where) : node.name, k);
+        instance.mesh = node.mesh;
+        instance.skin = node.skin;
+        instance.weights = node.weights;
+        if (translation) instance.translation = glm::vec3(translation->at(k, 0), translation->at(k, 1), translation->at(k, 2));
+        if (scale) instance.scale = glm::vec3(scale->at(k, 0), scale->at(k, 1), scale->at(k, 2));
+        if (rotation) {
+            const glm::vec4 q(rotation->at(k, 0), rotation->at(k, 1), rotation->at(k, 2), rotation->at(k, 3)); // x y z w
+            const float length = glm::length(q);
+            if (!(length > 1e-6f) || !std::isfinite(length)) fail("{} ROTATION {} is not a rotation ({}, {}, {}, {})", name, k, q.x, q.y, q.z, q.w);
+            instance.rotation = glm::quat(q.w / length, q.x / length, q.y / length, q.z / length);
+        }
+        const auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+        if (!finite(instance.translation) || !finite(instance.scale)) fail("{} instance {} has a number that is not finite", name, k);
+    }
+    return instances;
 }
 
 void Importer::chooseRoots()

@@ -198,6 +198,8 @@ private:
     void convertCameras();
     void convertLights();
     void convertNodes();
+    /// EXT_mesh_gpu_instancing on `node`: one node per instance (its TRS, the node's mesh).
+    std::vector<Node> meshInstances(const tinygltf::Value& instancing, const Node& node, std::string_view where);
     void chooseRoots();
 
     std::string mFile; ///< the path as the user gave it, for messages

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 #include <webp/encode.h>
 
@@ -1887,4 +1888,80 @@ TEST(GltfExtensions, AnisotropyDefaultsTexCoordTransformAndTangents)
     EXPECT_EQ(brushed.anisotropyTexture.transform.offset, glm::vec2(0.25f, 0.5f));
     EXPECT_EQ(brushed.anisotropyTexture.transform.scale, glm::vec2(2.0f));
     EXPECT_TRUE(scene.meshes.at(0).primitives.at(0).hasTangents);
+}
+
+// EXT_mesh_gpu_instancing: each instance is drawn at the node's world transform times its own
+// TRS, the rotation here a normalized SHORT quaternion (c / 32767, the glTF rule); the matrices
+// are built here from the numbers written. The node keeps its other children; animations and
+// other nodes keep their indices (instances come after the file's nodes).
+TEST(GltfExtensions, MeshGpuInstancingDrawsEveryInstance)
+{
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}});
+    const std::vector<float> translations = {0, 0, 0, 2, 0, 0, -1, 3, 0.5f};
+    const std::vector<float> scales = {1, 1, 1, 0.5f, 0.5f, 0.5f, 1, 2, 1};
+    // (0, 0, 0, 1), 90° about +Y, and an unnormalised 60° about +Z as stored shorts.
+    const std::vector<int16_t> rotations = {0, 0, 0, 32767, 0, 23170, 0, 23170, 0, 0, 16384, 28378};
+    b.doc["nodes"].push_back({{"name", "plain child"}, {"translation", {5.0, 0.0, 0.0}}});
+    json& node = b.doc["nodes"][0];
+    node["translation"] = {0.0, 1.0, 0.0};
+    node["rotation"] = {0.0, 0.0, 0.38268343, 0.92387953}; // 45° about +Z
+    node["children"] = {1};
+    node["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {
+        {"TRANSLATION", b.vec3(translations)}, {"SCALE", b.vec3(scales)}, {"ROTATION", b.data(rotations, 5122, 4, "VEC4", true)}};
+    b.doc["extensionsUsed"] = json::array({"EXT_mesh_gpu_instancing"});
+    b.doc["extensionsRequired"] = json::array({"EXT_mesh_gpu_instancing"});
+    const Scene scene = loadGltf(b.write(dir, "instanced.gltf"));
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    ASSERT_EQ(scene.nodes.size(), 5u); // the two of the file, then three instances
+    EXPECT_EQ(scene.nodes[1].name, "plain child");
+    const std::vector<MeshInstance> instances = scene.meshInstances();
+    ASSERT_EQ(instances.size(), 3u);
+    const glm::mat4 parent = glm::translate(glm::mat4(1.0f), {0, 1, 0}) *
+                             glm::mat4_cast(glm::quat(0.92387953f, 0.0f, 0.0f, 0.38268343f));
+    for (int k = 0; k < 3; ++k) {
+        glm::vec4 q;
+        for (int c = 0; c < 4; ++c) q[c] = std::max(float(rotations[size_t(4 * k + c)]) / 32767.0f, -1.0f);
+        q = glm::normalize(q);
+        const glm::mat4 local = glm::translate(glm::mat4(1.0f), {translations[3 * k], translations[3 * k + 1], translations[3 * k + 2]}) *
+                                glm::mat4_cast(glm::quat(q.w, q.x, q.y, q.z)) *
+                                glm::scale(glm::mat4(1.0f), {scales[3 * k], scales[3 * k + 1], scales[3 * k + 2]});
+        const glm::mat4 expected = parent * local;
+        const auto found = std::find_if(instances.begin(), instances.end(), [&](const MeshInstance& i) { return i.node == 2 + k; });
+        ASSERT_NE(found, instances.end()) << "instance " << k;
+        EXPECT_EQ(found->mesh, 0);
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) EXPECT_NEAR(found->world[c][r], expected[c][r], 1e-5f) << "instance " << k;
+    }
+}
+
+// EXT_mesh_gpu_instancing's errors, each one line: attributes of different counts, a wrong
+// type, none of the three; a node without a mesh is warned about and drawn as it is.
+TEST(GltfExtensions, MeshGpuInstancingErrors)
+{
+    auto load = [](json attributes, bool mesh = true) {
+        TempDir dir;
+        GltfBuilder b;
+        b.primitive({{"POSITION", b.vec3(kTriangle)}});
+        const int two = b.vec3({0, 0, 0, 1, 0, 0}), three = b.vec3({0, 0, 0, 1, 0, 0, 2, 0, 0});
+        const int scalar = b.data(std::vector<float>{1, 2}, kFloat, 1, "SCALAR");
+        for (auto& [key, value] : attributes.items())
+            if (value == "two") value = two; else if (value == "three") value = three; else if (value == "scalar") value = scalar;
+        if (!mesh) b.doc["nodes"][0].erase("mesh");
+        b.doc["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = attributes;
+        b.doc["extensionsUsed"] = json::array({"EXT_mesh_gpu_instancing"});
+        try {
+            const Scene s = loadGltf(b.write(dir, "bad.gltf"));
+            return s.warnings.empty() ? std::string("loaded") : "warned: " + s.warnings[0];
+        } catch (const std::exception& e) {
+            return std::string(e.what());
+        }
+    };
+    EXPECT_NE(load({{"TRANSLATION", "two"}, {"SCALE", "three"}}).find("has 3 elements where the other attributes have 2"), std::string::npos);
+    EXPECT_NE(load({{"TRANSLATION", "scalar"}}).find("TRANSLATION has 1 components per element instead of 3"), std::string::npos);
+    EXPECT_NE(load({{"_OTHER", "two"}}).find("names none of TRANSLATION, ROTATION and SCALE"), std::string::npos);
+    EXPECT_NE(load(json::object()).find("has no \"attributes\" object"), std::string::npos); // tinygltf keeps no empty object
+    EXPECT_NE(load({{"TRANSLATION", "two"}}, false).find("warned: "), std::string::npos);
+    EXPECT_EQ(load({{"TRANSLATION", "two"}}), "loaded");
 }
