@@ -32,6 +32,7 @@ constexpr std::string_view kSupportedExtensions[] = {
     "KHR_materials_emissive_strength",
     "KHR_materials_sheen", // the sheen lobe (Material::sheen*)
     "KHR_materials_ior",      // F0 of the dielectric part (Material::ior)
+    "KHR_materials_pbrSpecularGlossiness", // archived; converted (GltfMaterials.cpp, convertSpecularGlossiness)
     "KHR_materials_iridescence", // the thin film (Material::iridescence*)
     "KHR_materials_specular", // the dielectric F0 and F90: factors and textures (Material::specular*)
     "KHR_materials_transmission", // factor and texture (Material::transmission*; docs/transparency.md)

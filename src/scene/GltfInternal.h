@@ -171,6 +171,9 @@ private:
                           std::string_view where);
 
     void convertMaterials();
+    /// KHR_materials_pbrSpecularGlossiness (archived) as a metal-rough material with
+    /// KHR_materials_specular's colour and ior 0.
+    void convertSpecularGlossiness(const tinygltf::Value& sg, Material& material, const std::string& where);
     /// KHR_materials_variants: the variants' names (the root extension); each primitive's
     /// mappings are read with it (readVariantMappings).
     void convertVariants();
@@ -205,6 +208,8 @@ private:
     std::string mFile; ///< the path as the user gave it, for messages
     tinygltf::Model& mModel;
     ImageDecoding& mImages;
+    /// Roughness images made from a specular-glossiness texture's alpha, by (image, glossinessFactor).
+    std::map<std::pair<int, float>, int> mRoughnessImages;
     Scene mScene;
     std::vector<int> mParent; ///< per node, -1 for roots
     std::map<std::pair<size_t, size_t>, int> mDracoIndices;

@@ -355,6 +355,8 @@ void Importer::convertMaterials()
             material.iridescenceTexture = extensionTexture(*iridescence, "iridescenceTexture", where);
             material.iridescenceThicknessTexture = extensionTexture(*iridescence, "iridescenceThicknessTexture", where);
         }
+        if (const tinygltf::Value* sg = extension(source.extensions, "KHR_materials_pbrSpecularGlossiness"))
+            convertSpecularGlossiness(*sg, material, where);
         // KHR_materials_unlit: colour = the base colour term (factor × texture × vertex colour),
         // whatever the lights and the environment. The other PBR properties are only the fallback
         // of viewers without the extension (kept for --shading pbr), but emission is no part of
@@ -365,6 +367,64 @@ void Importer::convertMaterials()
             material.emissiveTexture = {};
         }
         mScene.materials.push_back(std::move(material));
+    }
+}
+
+void Importer::convertSpecularGlossiness(const tinygltf::Value& sg, Material& material, const std::string& where)
+{
+    // The archived KHR_materials_pbrSpecularGlossiness, converted as KHR_materials_specular's
+    // text describes: a dielectric whose F0 is the specular colour itself (ior 0: F0(ior) = 1,
+    // times specularColor), base colour = diffuse, roughness = 1 - glossiness. It replaces the
+    // metal-rough values, which are only the fallback of viewers without the extension.
+    material.baseColorFactor = glm::vec4(1.0f);
+    if (const tinygltf::Value* diffuse = member(sg, "diffuseFactor"); diffuse && diffuse->IsArray() && diffuse->ArrayLen() == 4)
+        for (int c = 0; c < 4; ++c)
+            if (diffuse->Get(c).IsNumber()) material.baseColorFactor[c] = float(std::clamp(diffuse->Get(c).GetNumberAsDouble(), 0.0, 1.0));
+    material.baseColorTexture = extensionTexture(sg, "diffuseTexture", where);
+    material.specularColorFactor = glm::vec3(1.0f);
+    if (const tinygltf::Value* specular = member(sg, "specularFactor"); specular && specular->IsArray() && specular->ArrayLen() == 3)
+        for (int c = 0; c < 3; ++c)
+            if (specular->Get(c).IsNumber()) material.specularColorFactor[c] = float(std::clamp(specular->Get(c).GetNumberAsDouble(), 0.0, 1.0));
+    material.specularFactor = 1.0f;
+    material.ior = 0.0f;
+    material.metallicFactor = 0.0f;
+    const float glossiness = float(std::clamp(number(sg, "glossinessFactor").value_or(1.0), 0.0, 1.0));
+    material.roughnessFactor = 1.0f - glossiness;
+    material.metallicRoughnessTexture = {};
+    // specularGlossinessTexture: RGB the specular colour (sRGB), A the glossiness (linear).
+    const TextureRef texture = extensionTexture(sg, "specularGlossinessTexture", where);
+    material.specularColorTexture = texture;
+    if (texture.valid()) {
+        // Roughness 1 - glossinessFactor x A is no factor times a texel: a linear image of it in G
+        // (the metallic-roughness texture's channel), one per source image and factor.
+        const auto key = std::make_pair(texture.image, glossiness);
+        auto found = mRoughnessImages.find(key);
+        if (found == mRoughnessImages.end()) {
+            const Image& source = mScene.images.at(size_t(texture.image));
+            int derived = -1;
+            if (!source.pixels.empty()) {
+                Image roughness;
+                roughness.name = source.name + " (roughness from glossiness)";
+                roughness.width = source.width;
+                roughness.height = source.height;
+                roughness.pixels.resize(source.pixels.size());
+                for (size_t i = 0; i + 3 < source.pixels.size(); i += 4) {
+                    const float g = glossiness * float(source.pixels[i + 3]) / 255.0f;
+                    roughness.pixels[i] = 255;
+                    roughness.pixels[i + 1] = uint8_t(std::lround(255.0f * (1.0f - g)));
+                    roughness.pixels[i + 2] = 0;
+                    roughness.pixels[i + 3] = 255;
+                }
+                mScene.images.push_back(std::move(roughness));
+                derived = int(mScene.images.size() - 1);
+            }
+            found = mRoughnessImages.emplace(key, derived).first;
+        }
+        if (found->second >= 0) {
+            material.metallicRoughnessTexture = texture;
+            material.metallicRoughnessTexture.image = found->second;
+            material.roughnessFactor = 1.0f;
+        }
     }
 }
 

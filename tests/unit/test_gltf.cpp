@@ -1965,3 +1965,32 @@ TEST(GltfExtensions, MeshGpuInstancingErrors)
     EXPECT_NE(load({{"TRANSLATION", "two"}}, false).find("warned: "), std::string::npos);
     EXPECT_EQ(load({{"TRANSLATION", "two"}}), "loaded");
 }
+
+// tests/assets/gltf/specular_glossiness_quad.gltf (make_specular_glossiness.py): the archived
+// KHR_materials_pbrSpecularGlossiness as KHR_materials_specular's text converts it — base colour
+// = diffuse, F0 = the specular colour (ior 0: F0(ior) = 1), no metal, roughness 1 - glossiness —
+// replacing the metal-rough fallback; roughness 1 - 0.8 x A in G of an image made for it.
+TEST(GltfExtensions, SpecularGlossinessBecomesSpecularColourAndRoughness)
+{
+    const Scene scene = loadGltf(kTestAssets / "specular_glossiness_quad.gltf");
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    ASSERT_EQ(scene.materials.size(), 1u);
+    const Material& m = scene.materials[0];
+    EXPECT_EQ(m.baseColorFactor, glm::vec4(0.8f, 0.9f, 1.0f, 1.0f));
+    EXPECT_EQ(m.baseColorTexture.image, 0);
+    EXPECT_EQ(m.metallicFactor, 0.0f);
+    EXPECT_EQ(m.specularColorFactor, glm::vec3(0.9f, 0.8f, 0.7f));
+    EXPECT_EQ(m.specularFactor, 1.0f);
+    ASSERT_TRUE(m.ior.has_value());
+    EXPECT_FLOAT_EQ(f0FromIor(*m.ior), 1.0f); // F0 = the specular colour itself
+    EXPECT_EQ(m.specularColorTexture.image, 1);
+    EXPECT_EQ(m.roughnessFactor, 1.0f);
+    ASSERT_TRUE(m.metallicRoughnessTexture.valid());
+    EXPECT_EQ(m.metallicRoughnessTexture.sampler, m.specularColorTexture.sampler);
+    ASSERT_EQ(scene.images.size(), 3u);
+    const Image& roughness = scene.images.at(size_t(m.metallicRoughnessTexture.image));
+    ASSERT_EQ(roughness.pixels.size(), 8u);
+    EXPECT_EQ(roughness.pixels[1], std::lround(255.0 * (1.0 - 0.8 * 255.0 / 255.0))); // texel 0: A 255
+    EXPECT_EQ(roughness.pixels[5], std::lround(255.0 * (1.0 - 0.8 * 64.0 / 255.0)));  // texel 1: A 64
+    EXPECT_EQ(roughness.pixels[6], 0);                                                  // metallic: none
+}
