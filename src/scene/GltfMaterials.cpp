@@ -403,6 +403,14 @@ void Importer::convertSpecularGlossiness(const tinygltf::Value& sg, Material& ma
             const Image& source = mScene.images.at(size_t(texture.image));
             int derived = -1;
             if (!source.pixels.empty()) {
+                // Held to the model's texture memory like any decoded image.
+                const LoadLimits& limits = mImages.limits;
+                const uint64_t bytes = source.pixels.size();
+                if (bytes > limits.maxTextureBytes - std::min(limits.maxTextureBytes, mImages.textureBytes))
+                    fail("{}: the roughness made from specularGlossinessTexture's image {} brings the model's textures to {} "
+                         "bytes, over the limit of {} (--max-texture-memory)",
+                         where, texture.image, mImages.textureBytes + bytes, limits.maxTextureBytes);
+                mImages.textureBytes += bytes;
                 Image roughness;
                 roughness.name = source.name + " (roughness from glossiness)";
                 roughness.width = source.width;

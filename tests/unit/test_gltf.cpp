@@ -1993,4 +1993,14 @@ TEST(GltfExtensions, SpecularGlossinessBecomesSpecularColourAndRoughness)
     EXPECT_EQ(roughness.pixels[1], std::lround(255.0 * (1.0 - 0.8 * 255.0 / 255.0))); // texel 0: A 255
     EXPECT_EQ(roughness.pixels[5], std::lround(255.0 * (1.0 - 0.8 * 64.0 / 255.0)));  // texel 1: A 64
     EXPECT_EQ(roughness.pixels[6], 0);                                                  // metallic: none
+    // The made image counts towards the model's texture memory: the two files' images are 16
+    // bytes, the roughness 8 more.
+    LoadOptions tight;
+    tight.limits.maxTextureBytes = 20;
+    try {
+        loadGltf(kTestAssets / "specular_glossiness_quad.gltf", tight);
+        ADD_FAILURE() << "loaded over the texture memory limit";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("brings the model's textures to 24 bytes, over the limit of 20"), std::string::npos) << e.what();
+    }
 }
