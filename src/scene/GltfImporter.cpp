@@ -38,6 +38,7 @@ constexpr std::string_view kSupportedExtensions[] = {
     "KHR_materials_transmission", // factor and texture (Material::transmission*; docs/transparency.md)
     "KHR_materials_unlit",    // the unlit shading model (Material::shading)
     "KHR_materials_variants", // material variants (Scene::variants, Primitive::variants; --variant)
+    "KHR_node_visibility",    // hidden subtrees lose their meshes and lights (convertNodes)
     "KHR_materials_volume",       // thickness (factor and texture) and attenuation (Material::thickness, attenuation*)
     "KHR_mesh_quantization", // integer attributes: the accessor reader handles every component type
     "KHR_texture_transform",
@@ -353,6 +354,23 @@ void Importer::convertNodes()
     }
     for (size_t i = 0; i < reached.size(); ++i)
         if (!reached[i]) fail("node {} is part of a cycle in the node hierarchy", i);
+
+    // KHR_node_visibility: a node whose `visible` is false hides its meshes and lights and
+    // those of every node below it, whatever theirs say; cameras stay. (Nothing animates the
+    // property here: KHR_animation_pointer is not read.)
+    for (size_t i = 0; i < mModel.nodes.size(); ++i) {
+        const tinygltf::Value* visibility = extension(mModel.nodes[i].extensions, "KHR_node_visibility");
+        const tinygltf::Value* visible = visibility ? member(*visibility, "visible") : nullptr;
+        if (!visible || !visible->IsBool() || visible->Get<bool>()) continue;
+        stack.assign(1, int(i));
+        while (!stack.empty()) {
+            Node& node = mScene.nodes[size_t(stack.back())];
+            stack.pop_back();
+            node.mesh = -1;
+            node.light = -1;
+            for (int child : node.children) stack.push_back(child);
+        }
+    }
 }
 
 std::vector<Node> Importer::meshInstances(const tinygltf::Value& instancing, const Node& node, std::string_view where)

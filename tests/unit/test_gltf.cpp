@@ -2004,3 +2004,30 @@ TEST(GltfExtensions, SpecularGlossinessBecomesSpecularColourAndRoughness)
         EXPECT_NE(std::string(e.what()).find("brings the model's textures to 24 bytes, over the limit of 20"), std::string::npos) << e.what();
     }
 }
+
+// KHR_node_visibility: `visible: false` hides a node's mesh and light and every descendant's,
+// even one that says `visible: true`; cameras stay; a visible node and its other subtrees are drawn.
+TEST(GltfExtensions, NodeVisibilityHidesSubtrees)
+{
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}}); // node 0: hidden, parent of 1
+    b.primitive({{"POSITION", b.vec3(kTriangle)}}); // node 1: visible: true, under 0
+    b.primitive({{"POSITION", b.vec3(kTriangle)}}); // node 2: visible: true at the root
+    b.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}}};
+    b.doc["nodes"][0]["children"] = {1, 3};
+    b.doc["nodes"][0]["extensions"]["KHR_node_visibility"]["visible"] = false;
+    b.doc["nodes"][1]["extensions"]["KHR_node_visibility"]["visible"] = true;
+    b.doc["nodes"][2]["extensions"]["KHR_node_visibility"]["visible"] = true;
+    b.doc["scenes"][0]["nodes"] = {0, 2};
+    b.doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}}};
+    b.doc["nodes"].push_back({{"camera", 0}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}); // node 3, under 0
+    b.doc["extensionsUsed"] = json::array({"KHR_node_visibility", "KHR_lights_punctual"});
+    const Scene scene = loadGltf(b.write(dir, "visibility.gltf"));
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    const std::vector<MeshInstance> meshes = scene.meshInstances();
+    ASSERT_EQ(meshes.size(), 1u);
+    EXPECT_EQ(meshes[0].node, 2);
+    EXPECT_TRUE(scene.lightInstances().empty());
+    EXPECT_EQ(scene.nodes.at(3).camera, 0);
+}
