@@ -9,15 +9,18 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
 #include <variant>
+#include <vector>
 
 #include "Viewer.h"
 #include "core/Error.h"
+#include "scene/Scene.h"
 #include "shading/BrdfPlot.h"
 #include "shading/ShadingVariant.h"
 #include "settings/PassSettings.h"
@@ -316,13 +319,17 @@ void materialsPanel(Viewer& viewer)
     }
     // Thumbnails, drawn by ImGui's backend straight from the renderer's textures (sRGB ones
     // show a little dark: the UI does not encode).
-    static constexpr const char* kSlots[] = {"base colour", "metal/rough", "normal", "occlusion", "emissive"};
-    const std::array<uint32_t, 5> textures = renderer.materialTextureNames(m);
-    bool first = true;
-    for (size_t k = 0; k < textures.size(); ++k) {
+    // Every texture the material samples, in scene::kMaterialTextures' order, five to a row.
+    static constexpr const char* kSlots[] = {"base colour", "metal/rough", "normal", "occlusion", "emissive",
+                                             "clearcoat", "coat rough", "coat normal", "sheen colour", "sheen rough",
+                                             "anisotropy", "iridescence", "film thick", "specular", "spec colour",
+                                             "transmission", "thickness"};
+    static_assert(std::size(kSlots) == scene::kMaterialTextures.size());
+    const std::vector<uint32_t> textures = renderer.materialTextureNames(m);
+    int shown = 0;
+    for (size_t k = 0; k < textures.size() && k < std::size(kSlots); ++k) {
         if (!textures[k]) continue;
-        if (!first) ImGui::SameLine();
-        first = false;
+        if (shown++ % 5 != 0) ImGui::SameLine();
         ImGui::BeginGroup();
         ImGui::Image(reinterpret_cast<ImTextureID>(uintptr_t(textures[k])), ImVec2(64, 64));
         ImGui::TextDisabled("%s", kSlots[k]);

@@ -455,10 +455,9 @@ scene::MaterialShading Renderer::materialShading(int material) const
     return unpackShading(mImpl->stores.scene->materials()[size_t(material)].features);
 }
 
-std::array<uint32_t, 5> Renderer::materialTextureNames(int material) const
+std::vector<uint32_t> Renderer::materialTextureNames(int material) const
 {
-    std::array<uint32_t, 5> names{}; // the core material's five textures
-    static_assert(size_t(TextureSlot::Emissive) == 4);
+    std::vector<uint32_t> names(size_t(TextureSlot::Count), 0u); // slot order = scene::kMaterialTextures'
     if (material < 0 || material >= materialCount()) return names;
     const MaterialBinding& binding = mImpl->stores.scene->materials()[size_t(material)];
     for (size_t i = 0; i < names.size(); ++i) names[i] = binding.textures[i] ? binding.textures[i]->id() : 0u;

@@ -302,9 +302,10 @@ public:
     void setMaterialParameter(int material, MaterialParameter parameter, const glm::vec4& value);
     /// The parameter's current value (as the buffer holds it; unused components 0).
     glm::vec4 materialParameter(int material, MaterialParameter parameter) const;
-    /// GL texture names of a material's base colour, metallic-roughness, normal, occlusion and
-    /// emissive textures (0 where it has none), for UI thumbnails (ImGui::Image).
-    std::array<uint32_t, 5> materialTextureNames(int material) const;
+    /// GL texture names of every texture a material samples, in scene::kMaterialTextures' order
+    /// (base colour, metallic-roughness, normal, occlusion, emissive, then the extensions'; 0
+    /// where it has none), for UI thumbnails (ImGui::Image).
+    std::vector<uint32_t> materialTextureNames(int material) const;
     /// A picture of the last frame's shadow atlas, drawn now as the shadow-atlas debug view
     /// draws it, `size`² RGBA8 (UI, ImGui::Image): its GL texture name, 0 when no light had a map.
     uint32_t shadowAtlasImage(int size);
