@@ -103,6 +103,26 @@ iridescence["materials"][0]["extensions"] = {"KHR_materials_iridescence": {
     "iridescenceThicknessMinimum": 150, "iridescenceThicknessMaximum": 650,
     "iridescenceThicknessTexture": {"index": 0, "texCoord": 0, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0], "scale": [-1, 1]}}}}}
 write("seeds/gltf/iridescence.gltf", json.dumps(iridescence))
+# KHR_materials_specular's, _transmission's and _volume's textures; EXT_mesh_gpu_instancing (three
+# instances from the triangle's own VEC3 accessors) and KHR_node_visibility on the camera's node.
+textured = triangle_gltf("buffer.bin", {"uri": "texture.png"})
+textured["extensionsUsed"] += ["KHR_materials_specular", "KHR_materials_transmission", "KHR_materials_volume",
+                               "EXT_mesh_gpu_instancing", "KHR_node_visibility"]
+textured["materials"][0]["extensions"] = {
+    "KHR_materials_specular": {"specularFactor": 0.5, "specularTexture": {"index": 0},
+                               "specularColorFactor": [1, 0.5, 0.2], "specularColorTexture": {"index": 0, "texCoord": 1}},
+    "KHR_materials_transmission": {"transmissionFactor": 0.7, "transmissionTexture": {"index": 0}},
+    "KHR_materials_volume": {"thicknessFactor": 0.2, "thicknessTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0]}}}}}
+textured["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": 0, "SCALE": 1}}}
+textured["nodes"][1]["extensions"]["KHR_node_visibility"] = {"visible": False}
+write("seeds/gltf/textured_instanced.gltf", json.dumps(textured))
+# The archived KHR_materials_pbrSpecularGlossiness, converted on import.
+specgloss = triangle_gltf("buffer.bin", {"uri": "texture.png"})
+specgloss["extensionsUsed"].append("KHR_materials_pbrSpecularGlossiness")
+specgloss["materials"][0]["extensions"] = {"KHR_materials_pbrSpecularGlossiness": {
+    "diffuseFactor": [1, 0.8, 0.6, 1], "diffuseTexture": {"index": 0}, "specularFactor": [0.5, 0.5, 0.5],
+    "glossinessFactor": 0.7, "specularGlossinessTexture": {"index": 0}}}
+write("seeds/gltf/specular_glossiness.gltf", json.dumps(specgloss))
 
 def glb(document, binary):
     text = json.dumps(document).encode()
