@@ -9,6 +9,7 @@
 #include "GlTestContext.h"
 #include "IblReference.h"
 #include "ImageProbe.h"
+#include "GltfBrdfTerms.h"
 #include "SphereTiles.h"
 
 #include <algorithm>
@@ -31,11 +32,12 @@ using glm::dvec3;
 using specula::test::hitUnitSphere;
 using specula::test::pixelRay;
 
+using namespace specula::test::gltf;
+
 namespace {
 
 // ---- the specification's lobe, in double precision -------------------------------------------
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinRoughness = 0.045; // the renderer's floor for punctual lights (docs/materials.md)
 
 // KHR_materials_anisotropy, "Implementation": D_GGX_anisotropic and V_GGX_anisotropic.
@@ -52,11 +54,6 @@ double specV(double NoL, double NoV, double BoV, double ToV, double ToL, double 
     const double GGXV = NoL * glm::length(dvec3(at * ToV, ab * BoV, NoV));
     const double GGXL = NoV * glm::length(dvec3(at * ToL, ab * BoL, NoL));
     return std::clamp(0.5 / (GGXV + GGXL), 0.0, 1.0);
-}
-
-dvec3 schlick(const dvec3& f0, double f90, double c)
-{
-    return f0 + (f90 - f0) * std::pow(1.0 - std::clamp(c, 0.0, 1.0), 5.0);
 }
 
 struct Brushed {

@@ -6,6 +6,7 @@
 // come from textures; the white furnace for the image-based path.
 #include "GlTestContext.h"
 #include "ImageProbe.h"
+#include "GltfBrdfTerms.h"
 #include "SphereTiles.h"
 
 #include <algorithm>
@@ -28,31 +29,13 @@ using glm::dvec3;
 using specula::test::hitUnitSphere;
 using specula::test::pixelRay;
 
+using namespace specula::test::gltf;
+
 namespace {
 
 // ---- the specification's BRDF, in double precision -------------------------------------------
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinRoughness = 0.045; // the renderer's floor for punctual lights (docs/materials.md)
-
-double D_GGX(double NoH, double alpha)
-{
-    const double a2 = alpha * alpha;
-    const double f = NoH * NoH * (a2 - 1.0) + 1.0;
-    return a2 / (kPi * f * f);
-}
-
-// glTF 2.0 Appendix B.3.2: V = G / (4 |n.l| |n.v|) with the separable Smith-GGX G.
-double V_GGX(double NoL, double NoV, double alpha)
-{
-    const double a2 = alpha * alpha;
-    return 1.0 / ((NoL + std::sqrt(a2 + (1.0 - a2) * NoL * NoL)) * (NoV + std::sqrt(a2 + (1.0 - a2) * NoV * NoV)));
-}
-
-dvec3 schlick(const dvec3& f0, double f90, double c)
-{
-    return f0 + (f90 - f0) * std::pow(1.0 - std::clamp(c, 0.0, 1.0), 5.0);
-}
 
 struct Coated {
     dvec3 baseColor{1.0};

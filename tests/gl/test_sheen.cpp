@@ -14,6 +14,7 @@
 #include "GlTestContext.h"
 #include "IblReference.h"
 #include "ImageProbe.h"
+#include "GltfBrdfTerms.h"
 #include "SphereTiles.h"
 
 #include <algorithm>
@@ -37,9 +38,10 @@ using glm::dvec3;
 using specula::test::hitUnitSphere;
 using specula::test::pixelRay;
 
+using namespace specula::test::gltf;
+
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinRoughness = 0.045; // the renderer's floor for punctual lights and the sheen (docs/materials.md)
 
 // ---- the specification's sheen lobe, in double precision -------------------------------------
@@ -112,24 +114,6 @@ struct SheenAlbedo {
 };
 
 // ---- the glTF base BRDF (Appendix B) ------------------------------------------------------------
-
-double D_GGX(double NoH, double alpha)
-{
-    const double a2 = alpha * alpha;
-    const double f = NoH * NoH * (a2 - 1.0) + 1.0;
-    return a2 / (kPi * f * f);
-}
-
-double V_GGX(double NoL, double NoV, double alpha)
-{
-    const double a2 = alpha * alpha;
-    return 1.0 / ((NoL + std::sqrt(a2 + (1.0 - a2) * NoL * NoL)) * (NoV + std::sqrt(a2 + (1.0 - a2) * NoV * NoV)));
-}
-
-dvec3 schlick(const dvec3& f0, double f90, double c)
-{
-    return f0 + (f90 - f0) * std::pow(1.0 - std::clamp(c, 0.0, 1.0), 5.0);
-}
 
 struct Sheened {
     dvec3 baseColor{1.0};
@@ -302,15 +286,6 @@ TEST_F(GlTest, SheenSpheresMatchTheExtensionsBrdf)
     compareSphere("satin, sheen (0.3, 0.5, 1) at 0.2", {{0.8, 0.8, 0.8}, 0.0, 0.7, {0.3, 0.5, 1.0}, 0.2}, {-2.0f, 1.0f, 1.0f}, 30.0f);
     compareSphere("gold, sheen 0.6 at 1", {{0.95, 0.64, 0.54}, 1.0, 0.5, {0.6, 0.6, 0.6}, 1.0}, {2.0f, 2.5f, 3.0f}, 30.0f);
 }
-
-namespace {
-
-double srgbToLinear(double c)
-{
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
-} // namespace
 
 TEST_F(GlTest, SheenTexturesFromGltf)
 {

@@ -7,6 +7,7 @@
 // 7,274 of the 28,422 channels checked; every texture read through uv set 0 failed at 4,840.
 #include "GlTestContext.h"
 #include "ImageProbe.h"
+#include "GltfBrdfTerms.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,28 +31,9 @@ using specula::test::GlTest;
 using glm::dvec3;
 using specula::test::pixelRay;
 
+using namespace specula::test::gltf;
+
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-double D_GGX(double NoH, double alpha)
-{
-    const double a2 = alpha * alpha;
-    const double f = NoH * NoH * (a2 - 1.0) + 1.0;
-    return a2 / (kPi * f * f);
-}
-
-// glTF 2.0 Appendix B.3.2: V = G / (4 |n.l| |n.v|) with the separable Smith-GGX G.
-double V_GGX(double NoL, double NoV, double alpha)
-{
-    const double a2 = alpha * alpha;
-    return 1.0 / ((NoL + std::sqrt(a2 + (1.0 - a2) * NoL * NoL)) * (NoV + std::sqrt(a2 + (1.0 - a2) * NoV * NoV)));
-}
-
-double srgbToLinear(double c)
-{
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
 
 /// A dielectric under KHR_materials_specular: radiance towards v per unit illuminance from l.
 dvec3 dielectricRadiance(const dvec3& baseColor, double roughness, double ior, double specular, const dvec3& specularColor,

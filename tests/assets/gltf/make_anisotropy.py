@@ -5,19 +5,11 @@
 # exactly: tests/gl/test_anisotropy.cpp): concentric brushing, each texel's RG the circle's
 # direction around the plate's centre (x 0.5 + 0.5), B the strength, 0.4 at the centre to 1 at
 # the corners; anisotropyStrength 0.9 scales it and anisotropyRotation 0.25 rad turns it.
-import base64, json, math, struct, zlib
+import json, math
+
+from quad import png, quad, uri
 
 N = 8
-
-def png(width, height, rows):
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
-    raw = b"".join(b"\0" + bytes(row) for row in rows)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
-            chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
-
-def uri(data, mime):
-    return "data:%s;base64,%s" % (mime, base64.b64encode(data).decode())
 
 def byte(x):
     return max(0, min(255, int(round(x * 255.0))))
@@ -35,24 +27,7 @@ for j in range(N):
         row += [byte(dx * 0.5 + 0.5), byte(dy * 0.5 + 0.5), byte(strength)]
     rows.append(row)
 
-pos = [-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0]
-nrm = [0, 0, 1] * 4
-tan = [1, 0, 0, 1] * 4
-uv = [0, 1, 1, 1, 1, 0, 0, 0]
-idx = [0, 1, 2, 0, 2, 3]
-def pack(fmt, v): return struct.pack("<%d%s" % (len(v), fmt), *v)
-views = [pack("f", pos), pack("f", nrm), pack("f", tan), pack("f", uv), pack("H", idx)]
-buf = b""; bv = []
-for k, v in enumerate(views):
-    while len(buf) % 4: buf += b"\0"
-    bv.append({"buffer": 0, "byteOffset": len(buf), "byteLength": len(v), "target": 34963 if k == 4 else 34962}); buf += v
-acc = [
-    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
-    {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
-    {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC4"},
-    {"bufferView": 3, "componentType": 5126, "count": 4, "type": "VEC2"},
-    {"bufferView": 4, "componentType": 5123, "count": 6, "type": "SCALAR"},
-]
+buf, bv, acc = quad(tangents=True, uv1=False)
 doc = {
     "asset": {"version": "2.0", "generator": "Specula tests/assets/gltf/make_anisotropy.py"},
     "extensionsUsed": ["KHR_materials_anisotropy"],
@@ -67,7 +42,7 @@ doc = {
             "anisotropyStrength": 0.9, "anisotropyRotation": 0.25, "anisotropyTexture": {"index": 0}}}}],
     "samplers": [{"magFilter": 9728, "minFilter": 9728}],
     "textures": [{"source": 0, "sampler": 0}],
-    "images": [{"name": "brushing", "mimeType": "image/png", "uri": uri(png(N, N, rows), "image/png")}],
+    "images": [{"name": "brushing", "mimeType": "image/png", "uri": uri(png(N, N, rows, level=9), "image/png")}],
     "accessors": acc, "bufferViews": bv,
     "buffers": [{"byteLength": len(buf), "uri": uri(buf, "application/octet-stream")}],
 }

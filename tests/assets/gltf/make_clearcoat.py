@@ -5,36 +5,11 @@
 #   clearcoatFactor 1 x clearcoatTexture R 204/255; clearcoatRoughnessFactor 0.5 x G 128/255
 #   (both channels of one image); clearcoatNormalTexture (171, 128, 247): the layer's normal
 #   tilted about 20 degrees towards +X (tangent), scale 0.8.
-import base64, json, struct, zlib
+import json
 
-def png(rgb):
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
-    raw = b"\0" + bytes(rgb)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 1, 1, 8, 2, 0, 0, 0)) +
-            chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+from quad import png, quad, uri
 
-def uri(data, mime):
-    return "data:%s;base64,%s" % (mime, base64.b64encode(data).decode())
-
-pos = [-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0]
-nrm = [0, 0, 1] * 4
-tan = [1, 0, 0, 1] * 4
-uv = [0, 1, 1, 1, 1, 0, 0, 0]
-idx = [0, 1, 2, 0, 2, 3]
-def pack(fmt, v): return struct.pack("<%d%s" % (len(v), fmt), *v)
-views = [pack("f", pos), pack("f", nrm), pack("f", tan), pack("f", uv), pack("H", idx)]
-buf = b""; bv = []
-for k, v in enumerate(views):
-    while len(buf) % 4: buf += b"\0"
-    bv.append({"buffer": 0, "byteOffset": len(buf), "byteLength": len(v), "target": 34963 if k == 4 else 34962}); buf += v
-acc = [
-    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
-    {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
-    {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC4"},
-    {"bufferView": 3, "componentType": 5126, "count": 4, "type": "VEC2"},
-    {"bufferView": 4, "componentType": 5123, "count": 6, "type": "SCALAR"},
-]
+buf, bv, acc = quad(tangents=True, uv1=False)
 doc = {
     "asset": {"version": "2.0", "generator": "Specula tests/assets/gltf/make_clearcoat.py"},
     "extensionsUsed": ["KHR_materials_clearcoat"],
@@ -51,8 +26,8 @@ doc = {
             "clearcoatNormalTexture": {"index": 2, "scale": 0.8}}}}],
     "samplers": [{"magFilter": 9728, "minFilter": 9728}],
     "textures": [{"source": 0, "sampler": 0}, {"source": 0, "sampler": 0}, {"source": 1, "sampler": 0}],
-    "images": [{"name": "clearcoat", "mimeType": "image/png", "uri": uri(png([204, 128, 0]), "image/png")},
-               {"name": "clearcoat normal", "mimeType": "image/png", "uri": uri(png([171, 128, 247]), "image/png")}],
+    "images": [{"name": "clearcoat", "mimeType": "image/png", "uri": uri(png(1, 1, [[204, 128, 0]]), "image/png")},
+               {"name": "clearcoat normal", "mimeType": "image/png", "uri": uri(png(1, 1, [[171, 128, 247]]), "image/png")}],
     "accessors": acc, "bufferViews": bv,
     "buffers": [{"byteLength": len(buf), "uri": uri(buf, "application/octet-stream")}],
 }

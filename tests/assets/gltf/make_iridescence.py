@@ -6,34 +6,11 @@
 #   thickness mix(100, 700 nm, G) from a 2 x 2 PNG, G = 0, 85 (top row), 170, 255 (bottom row):
 #   100, 300, 500 and 700 nm, sampled NEAREST, clamped, through KHR_texture_transform
 #   (offset (1, 0), scale (-1, 1): u' = 1 - u, the columns swapped), texCoord 0.
-import base64, json, struct, zlib
+import json
 
-def png(width, height, rows):
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
-    raw = b"".join(b"\0" + bytes(row) for row in rows)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
-            chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+from quad import png, quad, uri
 
-def uri(data, mime):
-    return "data:%s;base64,%s" % (mime, base64.b64encode(data).decode())
-
-pos = [-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0]
-nrm = [0, 0, 1] * 4
-uv = [0, 1, 1, 1, 1, 0, 0, 0]
-idx = [0, 1, 2, 0, 2, 3]
-def pack(fmt, v): return struct.pack("<%d%s" % (len(v), fmt), *v)
-views = [pack("f", pos), pack("f", nrm), pack("f", uv), pack("H", idx)]
-buf = b""; bv = []
-for k, v in enumerate(views):
-    while len(buf) % 4: buf += b"\0"
-    bv.append({"buffer": 0, "byteOffset": len(buf), "byteLength": len(v), "target": 34963 if k == 3 else 34962}); buf += v
-acc = [
-    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
-    {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
-    {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
-    {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"},
-]
+buf, bv, acc = quad(tangents=False, uv1=False)
 strength = png(1, 1, [[230, 0, 0]])
 thickness = png(2, 2, [[0, 0, 0, 0, 85, 0], [0, 170, 0, 0, 255, 0]])
 doc = {

@@ -1,7 +1,7 @@
 # Writes specular_quad.gltf (run in this directory; the output is committed).
 # One 2 x 2 quad facing +Z (normals +Z), a blue-grey dielectric of IOR 1.7 (KHR_materials_ior:
 # F0 = (0.7 / 2.7)^2) under KHR_materials_specular whose strength and colour come from textures,
-# so that every texel is known exactly (tests/gl/test_layered_materials.cpp):
+# so that every texel is known exactly (tests/gl/test_specular.cpp):
 #   specularFactor 0.9 x specularTexture A: a 2 x 1 RGBA PNG, texel 0 A 64, texel 1 A 230 (its
 #   RGB, unused, differ), sampled NEAREST through texCoord 0: texel 0 on the quad's left half
 #   (x < 0), texel 1 on its right.
@@ -9,37 +9,11 @@
 #   (255, 128, 64), texel 1 (64, 160, 255), through texCoord 1 (u1 = 1 - u0, v1 = v0) and
 #   KHR_texture_transform offset (0.5, 0): texel 0 on the left half too; either the transform or
 #   the texCoord alone would swap them.
-import base64, json, struct, zlib
+import json
 
-def png(pixels, width, channels):
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
-    raw = b"\0" + bytes(pixels)
-    colour = {3: 2, 4: 6}[channels]
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, 1, 8, colour, 0, 0, 0)) +
-            chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+from quad import png, quad, uri
 
-def uri(data, mime):
-    return "data:%s;base64,%s" % (mime, base64.b64encode(data).decode())
-
-pos = [-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0]
-nrm = [0, 0, 1] * 4
-uv0 = [0, 1, 1, 1, 1, 0, 0, 0]
-uv1 = [1, 1, 0, 1, 0, 0, 1, 0]
-idx = [0, 1, 2, 0, 2, 3]
-def pack(fmt, v): return struct.pack("<%d%s" % (len(v), fmt), *v)
-views = [pack("f", pos), pack("f", nrm), pack("f", uv0), pack("f", uv1), pack("H", idx)]
-buf = b""; bv = []
-for k, v in enumerate(views):
-    while len(buf) % 4: buf += b"\0"
-    bv.append({"buffer": 0, "byteOffset": len(buf), "byteLength": len(v), "target": 34963 if k == 4 else 34962}); buf += v
-acc = [
-    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
-    {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
-    {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
-    {"bufferView": 3, "componentType": 5126, "count": 4, "type": "VEC2"},
-    {"bufferView": 4, "componentType": 5123, "count": 6, "type": "SCALAR"},
-]
+buf, bv, acc = quad(tangents=False, uv1=True)
 doc = {
     "asset": {"version": "2.0", "generator": "Specula tests/assets/gltf/make_specular.py"},
     "extensionsUsed": ["KHR_materials_specular", "KHR_materials_ior", "KHR_texture_transform"],
@@ -59,8 +33,8 @@ doc = {
                                          "extensions": {"KHR_texture_transform": {"offset": [0.5, 0.0]}}}}}}],
     "samplers": [{"magFilter": 9728, "minFilter": 9728}],
     "textures": [{"source": 0, "sampler": 0}, {"source": 1, "sampler": 0}],
-    "images": [{"name": "specular", "mimeType": "image/png", "uri": uri(png([10, 200, 90, 64, 200, 10, 90, 230], 2, 4), "image/png")},
-               {"name": "specular colour", "mimeType": "image/png", "uri": uri(png([255, 128, 64, 64, 160, 255], 2, 3), "image/png")}],
+    "images": [{"name": "specular", "mimeType": "image/png", "uri": uri(png(2, 1, [[10, 200, 90, 64, 200, 10, 90, 230]], 4), "image/png")},
+               {"name": "specular colour", "mimeType": "image/png", "uri": uri(png(2, 1, [[255, 128, 64, 64, 160, 255]]), "image/png")}],
     "accessors": acc, "bufferViews": bv,
     "buffers": [{"byteLength": len(buf), "uri": uri(buf, "application/octet-stream")}],
 }

@@ -11,37 +11,11 @@
 #   would swap them); attenuation colour (0.9, 0.5, 0.2) after 0.25 m.
 # Read with the wrong channel (G for the transmission, R for the thickness) either texture
 # gives other values on both halves.
-import base64, json, struct, zlib
+import json
 
-def png(pixels, width, channels):
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
-    raw = b"\0" + bytes(pixels)
-    colour = {3: 2, 4: 6}[channels]
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, 1, 8, colour, 0, 0, 0)) +
-            chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+from quad import png, quad, uri
 
-def uri(data, mime):
-    return "data:%s;base64,%s" % (mime, base64.b64encode(data).decode())
-
-pos = [-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0]
-nrm = [0, 0, 1] * 4
-uv0 = [0, 1, 1, 1, 1, 0, 0, 0]
-uv1 = [1, 1, 0, 1, 0, 0, 1, 0]
-idx = [0, 1, 2, 0, 2, 3]
-def pack(fmt, v): return struct.pack("<%d%s" % (len(v), fmt), *v)
-views = [pack("f", pos), pack("f", nrm), pack("f", uv0), pack("f", uv1), pack("H", idx)]
-buf = b""; bv = []
-for k, v in enumerate(views):
-    while len(buf) % 4: buf += b"\0"
-    bv.append({"buffer": 0, "byteOffset": len(buf), "byteLength": len(v), "target": 34963 if k == 4 else 34962}); buf += v
-acc = [
-    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
-    {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
-    {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
-    {"bufferView": 3, "componentType": 5126, "count": 4, "type": "VEC2"},
-    {"bufferView": 4, "componentType": 5123, "count": 6, "type": "SCALAR"},
-]
+buf, bv, acc = quad(tangents=False, uv1=True)
 doc = {
     "asset": {"version": "2.0", "generator": "Specula tests/assets/gltf/make_transmission.py"},
     "extensionsUsed": ["KHR_materials_transmission", "KHR_materials_volume", "KHR_texture_transform"],
@@ -61,8 +35,8 @@ doc = {
                 "attenuationDistance": 0.25, "attenuationColor": [0.9, 0.5, 0.2]}}}],
     "samplers": [{"magFilter": 9728, "minFilter": 9728}],
     "textures": [{"source": 0, "sampler": 0}, {"source": 1, "sampler": 0}],
-    "images": [{"name": "transmission", "mimeType": "image/png", "uri": uri(png([128, 255, 0, 255, 64, 0], 2, 3), "image/png")},
-               {"name": "thickness", "mimeType": "image/png", "uri": uri(png([64, 255, 0, 255, 64, 0], 2, 3), "image/png")}],
+    "images": [{"name": "transmission", "mimeType": "image/png", "uri": uri(png(2, 1, [[128, 255, 0, 255, 64, 0]]), "image/png")},
+               {"name": "thickness", "mimeType": "image/png", "uri": uri(png(2, 1, [[64, 255, 0, 255, 64, 0]]), "image/png")}],
     "accessors": acc, "bufferViews": bv,
     "buffers": [{"byteLength": len(buf), "uri": uri(buf, "application/octet-stream")}],
 }
