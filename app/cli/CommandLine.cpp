@@ -25,6 +25,8 @@ void addLoadOptions(CLI::App* command, scene::LoadOptions& load)
     command->add_option("--max-texture-memory", load.limits.maxTextureBytes,
                         "most decoded texture memory of one model (default 2GiB)")
         ->transform(CLI::AsSizeValue(false));
+    command->add_option("--max-instances", load.limits.maxInstances,
+                        "most EXT_mesh_gpu_instancing instances in one model (default 1048576)");
 }
 
 void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)

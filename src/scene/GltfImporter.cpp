@@ -388,6 +388,11 @@ std::vector<Node> Importer::meshInstances(const tinygltf::Value& instancing, con
         const auto index = integer(*attributes, key);
         if (!index) return std::nullopt;
         const auto what = fmt::format("{} {}", name, key);
+        // Held to --max-instances before anything is read: each instance becomes a node and a draw.
+        const uint64_t declared = at(mModel.accessors, *index, "accessor", what).count;
+        const uint64_t limit = mImages.limits.maxInstances;
+        if (declared > limit - std::min(limit, mInstanceCount))
+            fail("{} brings the model to {} instances, over the limit of {} (--max-instances)", what, mInstanceCount + declared, limit);
         AccessorData<float> data = read<float>(*index, what);
         if (data.components != components) fail("{} has {} components per element instead of {}", what, data.components, components);
         if (count && *count != data.count) fail("{} has {} elements where the other attributes have {}", what, data.count, *count);
@@ -396,6 +401,7 @@ std::vector<Node> Importer::meshInstances(const tinygltf::Value& instancing, con
     };
     const auto translation = attribute("TRANSLATION", 3), rotation = attribute("ROTATION", 4), scale = attribute("SCALE", 3);
     if (!count) fail("{} names none of TRANSLATION, ROTATION and SCALE", name);
+    mInstanceCount += *count;
     std::vector<Node> instances(*count);
     for (size_t k = 0; k < instances.size(); ++k) {
         Node& instance = instances[k];

@@ -210,6 +210,7 @@ private:
     ImageDecoding& mImages;
     /// Roughness images made from a specular-glossiness texture's alpha, by (image, glossinessFactor).
     std::map<std::pair<int, float>, int> mRoughnessImages;
+    uint64_t mInstanceCount = 0; ///< EXT_mesh_gpu_instancing's instances so far (LoadLimits::maxInstances)
     Scene mScene;
     std::vector<int> mParent; ///< per node, -1 for roots
     std::map<std::pair<size_t, size_t>, int> mDracoIndices;

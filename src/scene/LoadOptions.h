@@ -3,7 +3,7 @@
 // which other files it may open, and how much it may allocate. The defaults are generous for
 // real scenes and refuse what only a forged or corrupt file asks for; the command line changes
 // them (--allow-external-files, --max-buffer-bytes, --max-accessor-count, --max-image-size,
-// --max-texture-memory).
+// --max-texture-memory, --max-instances).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -22,6 +22,9 @@ struct LoadLimits {
     int maxImageSize = 32768;
     /// Decoded texture memory of one model, RGBA8 bytes over all its images.
     uint64_t maxTextureBytes = uint64_t(2) << 30;
+    /// EXT_mesh_gpu_instancing's instances of one model, all nodes together: each is a node and
+    /// a draw, so a few bytes of a forged file could otherwise ask for gigabytes of them.
+    uint64_t maxInstances = uint64_t(1) << 20;
 };
 
 struct LoadOptions {

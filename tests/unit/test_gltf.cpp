@@ -2031,3 +2031,28 @@ TEST(GltfExtensions, NodeVisibilityHidesSubtrees)
     EXPECT_TRUE(scene.lightInstances().empty());
     EXPECT_EQ(scene.nodes.at(3).camera, 0);
 }
+
+// --max-instances: EXT_mesh_gpu_instancing's instances of a model, all nodes together, are held
+// to the limit before their accessors are read (each becomes a node and a draw).
+TEST(GltfExtensions, MeshGpuInstancingIsHeldToTheInstanceLimit)
+{
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}});
+    b.primitive({{"POSITION", b.vec3(kTriangle)}});
+    const int three = b.vec3({0, 0, 0, 1, 0, 0, 2, 0, 0});
+    for (int node : {0, 1}) b.doc["nodes"][node]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {{"TRANSLATION", three}};
+    b.doc["extensionsUsed"] = json::array({"EXT_mesh_gpu_instancing"});
+    const fs::path file = b.write(dir, "instances.gltf");
+    LoadOptions options;
+    options.limits.maxInstances = 6;
+    EXPECT_EQ(loadGltf(file, options).meshInstances().size(), 6u);
+    options.limits.maxInstances = 5;
+    try {
+        loadGltf(file, options);
+        ADD_FAILURE() << "loaded over the instance limit";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("node 1 EXT_mesh_gpu_instancing TRANSLATION brings the model to 6 instances, over the limit of 5 (--max-instances)"),
+                  std::string::npos) << e.what();
+    }
+}
