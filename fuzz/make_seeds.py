@@ -103,16 +103,20 @@ iridescence["materials"][0]["extensions"] = {"KHR_materials_iridescence": {
     "iridescenceThicknessMinimum": 150, "iridescenceThicknessMaximum": 650,
     "iridescenceThicknessTexture": {"index": 0, "texCoord": 0, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0], "scale": [-1, 1]}}}}}
 write("seeds/gltf/iridescence.gltf", json.dumps(iridescence))
-# KHR_materials_specular's, _transmission's and _volume's textures; EXT_mesh_gpu_instancing (three
-# instances from the triangle's own VEC3 accessors) and KHR_node_visibility on the camera's node.
+# KHR_materials_specular's, _transmission's, _volume's and _diffuse_transmission's textures;
+# EXT_mesh_gpu_instancing (three instances from the triangle's own VEC3 accessors) and
+# KHR_node_visibility on the camera's node.
 textured = triangle_gltf("buffer.bin", {"uri": "texture.png"})
 textured["extensionsUsed"] += ["KHR_materials_specular", "KHR_materials_transmission", "KHR_materials_volume",
-                               "EXT_mesh_gpu_instancing", "KHR_node_visibility"]
+                               "KHR_materials_diffuse_transmission", "EXT_mesh_gpu_instancing", "KHR_node_visibility"]
 textured["materials"][0]["extensions"] = {
     "KHR_materials_specular": {"specularFactor": 0.5, "specularTexture": {"index": 0},
                                "specularColorFactor": [1, 0.5, 0.2], "specularColorTexture": {"index": 0, "texCoord": 1}},
     "KHR_materials_transmission": {"transmissionFactor": 0.7, "transmissionTexture": {"index": 0}},
-    "KHR_materials_volume": {"thicknessFactor": 0.2, "thicknessTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0]}}}}}
+    "KHR_materials_volume": {"thicknessFactor": 0.2, "thicknessTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0]}}}},
+    "KHR_materials_diffuse_transmission": {"diffuseTransmissionFactor": 0.6, "diffuseTransmissionTexture": {"index": 0},
+                                           "diffuseTransmissionColorFactor": [1, 0.9, 0.3],
+                                           "diffuseTransmissionColorTexture": {"index": 0, "texCoord": 1}}}
 textured["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": 0, "SCALE": 1}}}
 textured["nodes"][1]["extensions"]["KHR_node_visibility"] = {"visible": False}
 write("seeds/gltf/textured_instanced.gltf", json.dumps(textured))
@@ -186,6 +190,7 @@ write("seeds/scene/all.json", json.dumps({
     "models": [{"path": "model.gltf", "position": [0, 0, 0], "scale": 2, "name": "m", "castShadows": False,
                 "materials": {"*": {"roughness": 0.3}}}],
     "shapes": [{"type": "sphere", "radius": 1, "segments": 8, "rings": 4, "material": {"baseColor": [1, 0, 0], "metallic": 1}},
+               {"type": "plane", "size": 1, "material": {"doubleSided": True, "diffuseTransmission": 0.5, "diffuseTransmissionColor": [1, 0.5, 0]}},
                {"type": "box", "halfExtent": [1, 2, 3]}, {"type": "plane", "size": 10, "uvRepeat": 2}],
     "lights": [{"type": "point", "position": [0, 3, 0], "intensity": 100, "color": [1, 1, 1], "range": 10},
                {"type": "spot", "position": [0, 3, 0], "target": [0, 0, 0], "innerConeAngle": 0.2, "outerConeAngle": 0.4},

@@ -496,6 +496,10 @@ void Viewer::setMaterialParameter(int index, render::MaterialParameter parameter
         m.iridescenceThicknessMinimum = std::max(value.x, 0.0f);
         m.iridescenceThicknessMaximum = std::max(value.y, 0.0f);
         break;
+    case render::MaterialParameter::DiffuseTransmission: m.diffuseTransmissionFactor = std::clamp(value.x, 0.0f, 1.0f); break;
+    case render::MaterialParameter::DiffuseTransmissionColor:
+        m.diffuseTransmissionColorFactor = glm::clamp(glm::vec3(value), 0.0f, 1.0f);
+        break;
     case render::MaterialParameter::PhongSpecular: // the classic ks: only in the record
     case render::MaterialParameter::SpecularColor: break; // colour × ior: setMaterialIor
     }

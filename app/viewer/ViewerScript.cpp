@@ -303,6 +303,13 @@ int ViewerScript::run(Viewer& viewer, const std::string& line)
             viewer.setMaterialParameter(i, render::MaterialParameter::IridescenceThickness, glm::vec4(w.number(4), w.number(5), 0.0f, 0.0f));
         return 0;
     }
+    if (a == "material-diffuse-transmission") {
+        // material-diffuse-transmission I FACTOR [R G B]
+        viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::DiffuseTransmission, glm::vec4(w.number(2)));
+        if (w.size() > 5)
+            viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::DiffuseTransmissionColor, glm::vec4(w.vec3(3), 0.0f));
+        return 0;
+    }
     if (a == "material-metallic") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Metallic, glm::vec4(w.number(2))); return 0; }
     if (a == "material-emissive") { viewer.setMaterialParameter(w.integer(1), render::MaterialParameter::Emissive, glm::vec4(w.vec3(2), 0.0f)); return 0; }
     if (a == "material-ior") { viewer.setMaterialIor(w.integer(1), w.number(2)); return 0; }

@@ -323,7 +323,7 @@ void materialsPanel(Viewer& viewer)
     static constexpr const char* kSlots[] = {"base colour", "metal/rough", "normal", "occlusion", "emissive",
                                              "clearcoat", "coat rough", "coat normal", "sheen colour", "sheen rough",
                                              "anisotropy", "iridescence", "film thick", "specular", "spec colour",
-                                             "transmission", "thickness"};
+                                             "transmission", "thickness", "diffuse trans", "d-trans colour"};
     static_assert(std::size(kSlots) == scene::kMaterialTextures.size());
     const std::vector<uint32_t> textures = renderer.materialTextureNames(m);
     int shown = 0;
@@ -382,6 +382,12 @@ void materialsPanel(Viewer& viewer)
     if (ImGui::SliderFloat("film IOR", &iridescenceIor, 1.0f, 3.0f)) set(MaterialParameter::IridescenceIor, glm::vec4(iridescenceIor));
     if (ImGui::DragFloat2("film thickness min, max (nm)", &thickness.x, 1.0f, 0.0f, 2000.0f))
         set(MaterialParameter::IridescenceThickness, thickness);
+    ImGui::TextDisabled("KHR_materials_diffuse_transmission");
+    float diffuseTransmission = value(MaterialParameter::DiffuseTransmission).x;
+    if (ImGui::SliderFloat("diffuse transmission", &diffuseTransmission, 0.0f, 1.0f))
+        set(MaterialParameter::DiffuseTransmission, glm::vec4(diffuseTransmission));
+    glm::vec4 transmittedColor = value(MaterialParameter::DiffuseTransmissionColor);
+    if (ImGui::ColorEdit3("transmitted colour", &transmittedColor.x)) set(MaterialParameter::DiffuseTransmissionColor, transmittedColor);
     ImGui::Separator();
     ImGui::TextDisabled("Phong, Blinn-Phong, Gouraud, flat");
     glm::vec4 ks = value(MaterialParameter::PhongSpecular);

@@ -7,7 +7,8 @@
 // (forward/clearcoat.glsl), SHEEN (forward/sheen.glsl), ANISOTROPY (forward/anisotropy.glsl),
 // IRIDESCENCE (forward/iridescence.glsl), SPECULAR_TEXTURES (forward/specular.glsl),
 // TRANSMISSION_TEXTURES (with TRANSMISSION: its factor and the volume's thickness times their
-// textures), DOUBLE_SIDED; OIT
+// textures), DIFFUSE_TRANSMISSION (forward/diffuse_transmission.glsl; DIFFUSE_TRANSMISSION_TEXTURES:
+// its textures), DOUBLE_SIDED; OIT
 // (weighted blended transparency's two targets); per frame, SSAO, and DOOM_INDEXED (a
 // Doom frame: with SHADING_DOOM, the output is a palette index and a colour-map level, not a
 // colour; render/DoomPass). A material without a feature pays nothing for it; without
@@ -87,6 +88,9 @@ const float kHalfMax = 65504.0;
 #endif
 #if defined(IRIDESCENCE)
 #include "iridescence.glsl"
+#endif
+#if defined(DIFFUSE_TRANSMISSION)
+#include "diffuse_transmission.glsl"
 #endif
 #include "shading_models.glsl"
 #include "debug_views.glsl"
@@ -237,6 +241,10 @@ void main()
 #if defined(IRIDESCENCE)
     ThinFilm film = makeIridescence(baseColor.rgb, metallic, specular);
 #endif
+#if defined(DIFFUSE_TRANSMISSION)
+    DiffuseTransmission diffuseTransmission = makeDiffuseTransmission(metallic);
+    vec3 throughLight = vec3(0.0); // what the BTDF lets through from behind (mixed in below)
+#endif
 
 #if defined(IBL) || defined(ENERGY_COMPENSATION)
     // Split-sum DFG terms of this draw's own D, G and F (the renderer binds the table baked for
@@ -268,6 +276,12 @@ void main()
         GpuLight light = lightAt(index);
         vec3 illuminance = lightIlluminance(light, vWorldPosition, l);
         float NoL = dot(n, l);
+#if defined(DIFFUSE_TRANSMISSION)
+        // A light behind the surface, through it; the shadow map's offset towards that light.
+        if (NoL < 0.0)
+            throughLight += diffuseTransmittedPunctual(surface, diffuseTransmission, n, v, l) * illuminance *
+                            shadowVisibility(light, vWorldPosition, -n, l);
+#endif
 #if defined(CLEARCOAT)
         // The layer's normal may face a light the base's does not, and the other way round.
         if (NoL <= 0.0 && dot(coat.n, l) <= 0.0) continue;
@@ -297,6 +311,9 @@ void main()
 
     // Constant ambient (non-physical, 0 unless a scene asks): lights the diffuse part only.
     diffuseLight += frame.ambient.rgb * surface.diffuseColor * occlusion;
+#if defined(DIFFUSE_TRANSMISSION)
+    throughLight += frame.ambient.rgb * diffuseTransmission.color; // from every direction behind too
+#endif
 
 #if defined(IBL)
 #if defined(ANISOTROPY)
@@ -366,6 +383,12 @@ void main()
 #endif
     diffuseLight += diffuseIbl * occlusion * environment.params.x;
     specularLight += specularIbl * specularAo * environment.params.x;
+#if defined(DIFFUSE_TRANSMISSION)
+    // The BTDF's irradiance is the hemisphere behind, about -n, weighted as the diffuse lobe is
+    // (the occlusion maps describe the side in front: not applied).
+    throughLight += irradianceCube(toEnvironment(-n)) * diffuseTransmission.color * INV_PI * diffuseWeightIbl *
+                    environment.params.x;
+#endif
 #if defined(SHEEN)
     // The broad lobe is occluded as the diffuse one is.
     sheenLight += sheenEnvironment(sheen, n, v, NoV) * occlusion * environment.params.x;
@@ -386,6 +409,12 @@ void main()
 #endif
     coatLight += coatIbl * coat.factor * specularOcclusion(coat.NoV, occlusion, coat.brdf.perceptualRoughness) * environment.params.x;
 #endif
+#endif
+
+#if defined(DIFFUSE_TRANSMISSION)
+    // The extension's mix(diffuse_brdf, diffuse_btdf, fraction), before transmission (which
+    // replaces both where the two extensions meet, as the extension says).
+    diffuseLight = mix(diffuseLight, throughLight, diffuseTransmission.fraction);
 #endif
 
 #if defined(TRANSMISSION)

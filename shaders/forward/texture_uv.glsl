@@ -18,6 +18,8 @@ const uint TEX_SPECULAR = 13u; // KHR_materials_specular's two
 const uint TEX_SPECULAR_COLOR = 14u;
 const uint TEX_TRANSMISSION = 15u; // KHR_materials_transmission's, then KHR_materials_volume's
 const uint TEX_THICKNESS = 16u;
+const uint TEX_DIFFUSE_TRANSMISSION = 17u; // KHR_materials_diffuse_transmission's two
+const uint TEX_DIFFUSE_TRANSMISSION_COLOR = 18u;
 
 // Texture coordinates of one texture: its uv set and KHR_texture_transform.
 vec2 textureUv(uint texture)

@@ -53,11 +53,13 @@
 #define SPECULA_UNIT_SPECULAR 30            // KHR_materials_specular's two textures (forward pass)
 #define SPECULA_UNIT_SPECULAR_COLOR 31
 // Above 31: a fragment shader may use any unit below GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS (every
-// GL 4.5 has far more than 34) as long as one program samples no more than
-// GL_MAX_TEXTURE_IMAGE_UNITS textures: the widest forward program samples 23 on
+// GL 4.5 has far more than 36) as long as one program samples no more than
+// GL_MAX_TEXTURE_IMAGE_UNITS textures: the widest forward program samples 25 on
 // llvmpipe (GlTest.TheWidestForwardProgramLinksWithinTheTextureUnits checks it against the count).
 #define SPECULA_UNIT_TRANSMISSION_FACTOR 32 // KHR_materials_transmission's texture (forward pass)
 #define SPECULA_UNIT_THICKNESS 33           // KHR_materials_volume's
+#define SPECULA_UNIT_DIFFUSE_TRANSMISSION 34       // KHR_materials_diffuse_transmission's two textures
+#define SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR 35 // (forward pass, DIFFUSE_TRANSMISSION_TEXTURES variant)
 #define SPECULA_UNIT_SSAO 12             // forward pass: the blurred ambient occlusion
 #define SPECULA_BINDING_SSAO 5           // uniform buffer: SsaoData
 #define SPECULA_BINDING_EXPOSURE_PARAMS 6 // uniform buffer: ExposureParams

@@ -38,8 +38,9 @@ struct GpuMaterial {
                           // metallic-roughness, normal, occlusion, emissive, clearcoat, clearcoat
                           // roughness, clearcoat normal, sheen colour, sheen roughness, anisotropy,
                           // iridescence, iridescence thickness, specular, specular colour,
-                          // transmission, thickness: 17)
-    vec4 uvTransform[34]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
+                          // transmission, thickness, diffuse transmission, diffuse transmission
+                          // colour: 19)
+    vec4 uvTransform[38]; // per texture two rows (a b c)(d e f) of KHR_texture_transform
     vec4 specular;        // KHR_materials_specular: rgb specularColorFactor, a specularFactor; rgb also
                           // carries KHR_materials_ior: x (F0(ior) / 0.04), so 0.04 x rgb is the dielectric F0
     vec4 phong;           // Phong, Blinn-Phong, Gouraud, flat: rgb dielectric specular colour ks,
@@ -55,14 +56,20 @@ struct GpuMaterial {
                           // w 1 with an anisotropyTexture (read at run time by the ANISOTROPY variant)
     vec4 iridescence;     // KHR_materials_iridescence: x iridescenceFactor, y iridescenceIor,
                           // z iridescenceThicknessMinimum, w iridescenceThicknessMaximum (nm)
+    vec4 diffuseTransmission; // KHR_materials_diffuse_transmission: rgb diffuseTransmissionColorFactor
+                              // (linear), a diffuseTransmissionFactor (read by the DIFFUSE_TRANSMISSION variant)
 };
 
 SPECULA_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(specula::shared::GpuMaterial) == 47 * 16);
+static_assert(sizeof(specula::shared::GpuMaterial) == 52 * 16);
 // Feature bits above the record's 32, in render::MaterialBinding::features only: which of an
 // extension's textures a variant samples (the record needs no flag for them).
 #define SPECULA_MATERIAL_SPECULAR_TEXTURES (uint64_t(1) << 32)     // KHR_materials_specular's
 #define SPECULA_MATERIAL_TRANSMISSION_TEXTURES (uint64_t(1) << 33) // KHR_materials_transmission's and _volume's
+// KHR_materials_diffuse_transmission: its factor above 0 (the record's 32 bits are all taken:
+// the variant alone reads the factor), and its textures.
+#define SPECULA_MATERIAL_DIFFUSE_TRANSMISSION (uint64_t(1) << 34)
+#define SPECULA_MATERIAL_DIFFUSE_TRANSMISSION_TEXTURES (uint64_t(1) << 35)
 #endif

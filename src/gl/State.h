@@ -95,7 +95,7 @@ public:
     void resetCounters() { mDrawCalls = 0; }
 
 private:
-    static constexpr int kUnits = 34; // units up to SPECULA_UNIT_THICKNESS (shaders/shared/Bindings.h)
+    static constexpr int kUnits = 36; // units up to SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR (shaders/shared/Bindings.h)
     uint32_t mProgram = ~0u;
     uint32_t mVertexArray = ~0u;
     uint32_t mFramebuffer = ~0u;

@@ -30,6 +30,9 @@ bool sampledByVariant(const MaterialBinding& m, TextureSlot slot)
     case TextureSlot::SpecularColor: return has(SPECULA_MATERIAL_SPECULAR_TEXTURES);
     case TextureSlot::Transmission:
     case TextureSlot::Thickness: return has(SPECULA_MATERIAL_TRANSMISSION_TEXTURES);
+    case TextureSlot::DiffuseTransmission:
+    case TextureSlot::DiffuseTransmissionColor:
+        return has(SPECULA_MATERIAL_DIFFUSE_TRANSMISSION) && has(SPECULA_MATERIAL_DIFFUSE_TRANSMISSION_TEXTURES);
     default: return true;
     }
 }

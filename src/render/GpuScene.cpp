@@ -110,6 +110,10 @@ constexpr std::array<SlotFormat, size_t(TextureSlot::Count)> kSlots{{
     // without one).
     {false, 0u},
     {false, 0u},
+    // Read only by the DIFFUSE_TRANSMISSION_TEXTURES variant (A, and sRGB colour), which
+    // samples both (white without one).
+    {false, 0u},
+    {true, 0u},
 }};
 static_assert(scene::kMaterialTextures.size() == kSlots.size(), "one slot for every texture of scene::Material");
 
@@ -161,6 +165,8 @@ int textureUnit(TextureSlot slot)
     case TextureSlot::SpecularColor: return SPECULA_UNIT_SPECULAR_COLOR;
     case TextureSlot::Transmission: return SPECULA_UNIT_TRANSMISSION_FACTOR;
     case TextureSlot::Thickness: return SPECULA_UNIT_THICKNESS;
+    case TextureSlot::DiffuseTransmission: return SPECULA_UNIT_DIFFUSE_TRANSMISSION;
+    case TextureSlot::DiffuseTransmissionColor: return SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR;
     default: return int(slot);
     }
 }
@@ -283,6 +289,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         // The rotation as its cosine and sine: the shader turns the direction with them.
         gpu.anisotropy = glm::vec4(m.anisotropyStrength, std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), 0.0f);
         gpu.iridescence = glm::vec4(m.iridescenceFactor, m.iridescenceIor, m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum);
+        gpu.diffuseTransmission = glm::vec4(m.diffuseTransmissionColorFactor, m.diffuseTransmissionFactor);
         // Classic models' specular colour: mid grey, a plastic highlight (Phong 1975's ks).
         gpu.phong = glm::vec4(glm::vec3(0.5f), m.shininess);
         for (int slot = 0; slot < int(TextureSlot::Count); ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
@@ -308,7 +315,11 @@ GpuScene::GpuScene(const scene::Scene& scene)
                 textureFeatures |= SPECULA_MATERIAL_SPECULAR_TEXTURES;
             if (TextureSlot(slot) == TextureSlot::Transmission || TextureSlot(slot) == TextureSlot::Thickness)
                 textureFeatures |= SPECULA_MATERIAL_TRANSMISSION_TEXTURES;
+            if (TextureSlot(slot) == TextureSlot::DiffuseTransmission || TextureSlot(slot) == TextureSlot::DiffuseTransmissionColor)
+                textureFeatures |= SPECULA_MATERIAL_DIFFUSE_TRANSMISSION_TEXTURES;
         }
+        // KHR_materials_diffuse_transmission: a zero factor is none (the texture only scales it).
+        if (m.diffuseTransmissionFactor > 0.0f) textureFeatures |= SPECULA_MATERIAL_DIFFUSE_TRANSMISSION;
         if (m.doubleSided) gpu.flags.x |= SPECULA_MATERIAL_DOUBLE_SIDED;
         if (m.alphaMode == scene::AlphaMode::Mask) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_MASK;
         if (m.alphaMode == scene::AlphaMode::Blend) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_BLEND;
@@ -588,13 +599,15 @@ void GpuScene::setBlendMode(int material, scene::BlendMode mode)
     }
 }
 
-void GpuScene::setFeature(int material, uint32_t bit, bool on)
+void GpuScene::setFeature(int material, uint64_t bit, bool on)
 {
     for (size_t record = 0; record < mMaterials.size(); ++record) {
         if (mRecordMaterial[record] != material) continue;
         MaterialBinding& binding = mMaterials[record];
-        binding.features = on ? binding.features | bit : binding.features & ~uint64_t(bit);
-        mRecords[record].flags.x = (mRecords[record].flags.x & ~bit) | uint32_t(binding.features & bit);
+        binding.features = on ? binding.features | bit : binding.features & ~bit;
+        // Bits above the record's 32 live in the binding only (MaterialData.h).
+        const uint32_t recordBit = uint32_t(bit);
+        mRecords[record].flags.x = (mRecords[record].flags.x & ~recordBit) | uint32_t(binding.features & recordBit);
         mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
                                &mRecords[record].flags.x);
     }

@@ -48,6 +48,7 @@ enum class TextureSlot {
     Iridescence, IridescenceThickness,              ///< KHR_materials_iridescence (IRIDESCENCE variant only)
     Specular, SpecularColor,                        ///< KHR_materials_specular (SPECULAR_TEXTURES variant only)
     Transmission, Thickness,                        ///< KHR_materials_transmission, _volume (TRANSMISSION_TEXTURES only)
+    DiffuseTransmission, DiffuseTransmissionColor,  ///< KHR_materials_diffuse_transmission (DIFFUSE_TRANSMISSION_TEXTURES only)
     Count
 };
 /// The texture unit of each slot (shaders/shared/Bindings.h): the first five are units 0-4.
@@ -121,8 +122,8 @@ public:
     /// Sets or clears feature bit `bit` (a SPECULA_MATERIAL_* that selects a variant) of
     /// `material` and its copies, in the variant key and the uploaded record (a clearcoat of
     /// factor 0, a black sheen, anisotropy of strength 0, a film of factor 0: the variant goes,
-    /// and its textures).
-    void setFeature(int material, uint32_t bit, bool on);
+    /// and its textures). Bits above 31 are the binding's only (MaterialData.h).
+    void setFeature(int material, uint64_t bit, bool on);
     /// Writes `size` bytes at `offset` within `material`'s record (and its copies'), in the
     /// CPU copy and in the buffer: no other byte of the buffer is written.
     void writeMaterial(int material, size_t offset, size_t size, const void* data);

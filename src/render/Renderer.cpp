@@ -202,11 +202,13 @@ Renderer::Renderer() : mImpl(std::make_unique<Impl>())
         throw Error("this OpenGL implementation has {} texture units; Specula needs {}", gl::maxTextureUnits(),
                     SPECULA_UNIT_RESIDUAL_PREFILTERED + 1);
     // The extension textures' units above the fragment stage's count (shaders/shared/Bindings.h).
-    static_assert(SPECULA_UNIT_THICKNESS > SPECULA_UNIT_TRANSMISSION_FACTOR && SPECULA_UNIT_TRANSMISSION_FACTOR > SPECULA_UNIT_SPECULAR_COLOR &&
+    static_assert(SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR > SPECULA_UNIT_DIFFUSE_TRANSMISSION &&
+                  SPECULA_UNIT_DIFFUSE_TRANSMISSION > SPECULA_UNIT_THICKNESS &&
+                  SPECULA_UNIT_THICKNESS > SPECULA_UNIT_TRANSMISSION_FACTOR && SPECULA_UNIT_TRANSMISSION_FACTOR > SPECULA_UNIT_SPECULAR_COLOR &&
                   SPECULA_UNIT_SPECULAR_COLOR > SPECULA_UNIT_SPECULAR && SPECULA_UNIT_SPECULAR > SPECULA_UNIT_RESIDUAL_PREFILTERED);
-    if (gl::maxCombinedTextureUnits() <= SPECULA_UNIT_THICKNESS)
+    if (gl::maxCombinedTextureUnits() <= SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR)
         throw Error("this OpenGL implementation has {} combined texture units; Specula needs {}", gl::maxCombinedTextureUnits(),
-                    SPECULA_UNIT_THICKNESS + 1);
+                    SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR + 1);
 }
 Renderer::~Renderer() = default;
 
@@ -524,6 +526,8 @@ glm::vec4 Renderer::materialParameter(int material, MaterialParameter parameter)
     case MaterialParameter::IridescenceFactor: return glm::vec4(r.iridescence.x, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::IridescenceIor: return glm::vec4(r.iridescence.y, 0.0f, 0.0f, 0.0f);
     case MaterialParameter::IridescenceThickness: return glm::vec4(r.iridescence.z, r.iridescence.w, 0.0f, 0.0f);
+    case MaterialParameter::DiffuseTransmission: return glm::vec4(r.diffuseTransmission.w, 0.0f, 0.0f, 0.0f);
+    case MaterialParameter::DiffuseTransmissionColor: return glm::vec4(glm::vec3(r.diffuseTransmission), 0.0f);
     }
     return glm::vec4(0.0f);
 }
@@ -622,6 +626,17 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::IridescenceThickness: {
         const glm::vec4 v = glm::max(value, glm::vec4(0.0f));
         gpu.writeMaterial(material, offsetof(GpuMaterial, iridescence) + 2 * sizeof(float), 2 * sizeof(float), &v.x);
+        break;
+    }
+    case MaterialParameter::DiffuseTransmission: {
+        const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
+        gpu.writeMaterial(material, offsetof(GpuMaterial, diffuseTransmission) + 3 * sizeof(float), sizeof(float), &v.x);
+        gpu.setFeature(material, SPECULA_MATERIAL_DIFFUSE_TRANSMISSION, v.x > 0.0f);
+        break;
+    }
+    case MaterialParameter::DiffuseTransmissionColor: {
+        const glm::vec3 v = glm::clamp(glm::vec3(value), 0.0f, 1.0f);
+        gpu.writeMaterial(material, offsetof(GpuMaterial, diffuseTransmission), 3 * sizeof(float), &v.x);
         break;
     }
     }

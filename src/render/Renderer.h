@@ -54,8 +54,11 @@ enum class MaterialParameter {
     IridescenceFactor,    ///< x, KHR_materials_iridescence factor (0 = no film: the IRIDESCENCE variant goes)
     IridescenceIor,       ///< x, the film's IOR (at least 1)
     IridescenceThickness, ///< x minimum, y maximum thickness (nm, at least 0)
+    /// x, KHR_materials_diffuse_transmission factor (0 = none: the DIFFUSE_TRANSMISSION variant goes)
+    DiffuseTransmission,
+    DiffuseTransmissionColor, ///< rgb, the transmitted light's colour (linear)
 };
-constexpr int kMaterialParameterCount = int(MaterialParameter::IridescenceThickness) + 1;
+constexpr int kMaterialParameterCount = int(MaterialParameter::DiffuseTransmissionColor) + 1;
 
 /// How the specular lobe integrates image-based light (docs/ibl.md).
 enum class IblSpecular {

@@ -28,6 +28,7 @@ constexpr std::string_view kSupportedExtensions[] = {
     "KHR_lights_punctual",
     "KHR_materials_anisotropy", // the anisotropic specular lobe (Material::anisotropy*)
     "KHR_materials_clearcoat", // the clearcoat layer (Material::clearcoat*)
+    "KHR_materials_diffuse_transmission", // a Lambertian BTDF (Material::diffuseTransmission*)
     "KHR_materials_dispersion", // per-channel refraction through a volume (Material::dispersion)
     "KHR_materials_emissive_strength",
     "KHR_materials_sheen", // the sheen lobe (Material::sheen*)

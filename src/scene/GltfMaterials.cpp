@@ -293,6 +293,18 @@ void Importer::convertMaterials()
             const double value = number(*dispersion, "dispersion").value_or(0.0);
             material.dispersion = std::isfinite(value) ? float(std::max(value, 0.0)) : 0.0f;
         }
+        // KHR_materials_diffuse_transmission: a Lambertian BTDF for that fraction of the diffuse lobe.
+        if (const tinygltf::Value* diffuse = extension(source.extensions, "KHR_materials_diffuse_transmission")) {
+            const double value = number(*diffuse, "diffuseTransmissionFactor").value_or(0.0);
+            material.diffuseTransmissionFactor = std::isfinite(value) ? float(std::clamp(value, 0.0, 1.0)) : 0.0f;
+            if (const tinygltf::Value* color = member(*diffuse, "diffuseTransmissionColorFactor");
+                color && color->IsArray() && color->ArrayLen() == 3)
+                for (int c = 0; c < 3; ++c)
+                    if (color->Get(c).IsNumber())
+                        material.diffuseTransmissionColorFactor[c] = float(std::clamp(color->Get(c).GetNumberAsDouble(), 0.0, 1.0));
+            material.diffuseTransmissionTexture = extensionTexture(*diffuse, "diffuseTransmissionTexture", where);
+            material.diffuseTransmissionColorTexture = extensionTexture(*diffuse, "diffuseTransmissionColorTexture", where);
+        }
         material.normalScale = float(source.normalTexture.scale);
         material.occlusionStrength = float(source.occlusionTexture.strength);
         if (source.alphaMode == "MASK") {

@@ -105,6 +105,14 @@ struct Material {
     /// KHR_materials_dispersion: 20 / the Abbe number V_d (0 = none). A volume's red, green and
     /// blue refract with their own index of refraction (ior ∓ (ior − 1) × 0.025 × dispersion).
     float dispersion = 0.0f;
+    /// KHR_materials_diffuse_transmission: that fraction of the dielectric's diffuse light is
+    /// a Lambertian BTDF instead (light through a thin leaf or paper, from the other side), of
+    /// colour diffuseTransmissionColorFactor x diffuseTransmissionColorTexture's RGB (sRGB); the
+    /// fraction is the factor x diffuseTransmissionTexture's A (0 = none: an ordinary surface).
+    float diffuseTransmissionFactor = 0.0f;
+    glm::vec3 diffuseTransmissionColorFactor{1.0f};
+    TextureRef diffuseTransmissionTexture;      ///< A
+    TextureRef diffuseTransmissionColorTexture; ///< sRGB
     TextureRef baseColorTexture;         ///< sRGB
     TextureRef metallicRoughnessTexture; ///< G = roughness, B = metallic
     TextureRef normalTexture;
@@ -167,7 +175,8 @@ inline constexpr std::array kMaterialTextures{
     &Material::clearcoatRoughnessTexture, &Material::clearcoatNormalTexture, &Material::sheenColorTexture,
     &Material::sheenRoughnessTexture, &Material::anisotropyTexture,     &Material::iridescenceTexture,
     &Material::iridescenceThicknessTexture, &Material::specularTexture, &Material::specularColorTexture,
-    &Material::transmissionTexture, &Material::thicknessTexture,
+    &Material::transmissionTexture, &Material::thicknessTexture,   &Material::diffuseTransmissionTexture,
+    &Material::diffuseTransmissionColorTexture,
 };
 
 template <typename F>

@@ -79,7 +79,8 @@ const std::vector<std::string_view> kMaterialKeys = {"name", "baseColor", "metal
                                                      "attenuationDistance", "attenuationColor", "clearcoat",
                                                      "clearcoatRoughness", "sheenColor", "sheenRoughness",
                                                      "anisotropyStrength", "anisotropyRotation", "iridescence", "iridescenceIor",
-                                                     "iridescenceThicknessMinimum", "iridescenceThicknessMaximum"};
+                                                     "iridescenceThicknessMinimum", "iridescenceThicknessMaximum",
+                                                     "diffuseTransmission", "diffuseTransmissionColor"};
 
 /// Sets the material's fields that `object` gives; the others keep their values (a shape's
 /// defaults, or a glTF model's material with its textures).
@@ -132,6 +133,12 @@ void applyMaterialKeys(const Object& object, Material& material)
     }
     material.iridescenceThicknessMinimum = object.nonNegative("iridescenceThicknessMinimum").value_or(material.iridescenceThicknessMinimum);
     material.iridescenceThicknessMaximum = object.nonNegative("iridescenceThicknessMaximum").value_or(material.iridescenceThicknessMaximum);
+    // KHR_materials_diffuse_transmission's factor and colour (a glTF model's textures stay).
+    material.diffuseTransmissionFactor = object.unitInterval("diffuseTransmission").value_or(material.diffuseTransmissionFactor);
+    if (const auto color = object.color("diffuseTransmissionColor")) {
+        if (glm::any(glm::greaterThan(*color, glm::vec3(1.0f)))) object.fail("diffuseTransmissionColor", "must be between 0 and 1");
+        material.diffuseTransmissionColorFactor = *color;
+    }
     // Material system (docs/scene-format.md): shading model, BRDF terms, F0 from an IOR, Phong exponent.
     if (const auto v = object.choice("shading", {"pbr", "unlit", "flat", "gouraud", "phong", "blinn-phong", "doom"}))
         material.shading.model = parseShadingModel(*v);

@@ -29,6 +29,8 @@ constexpr uint64_t kSheen = uint64_t(1) << 43, kAnisotropy = uint64_t(1) << 44, 
 constexpr uint64_t kDispersion = uint64_t(1) << 46;
 // The extension textures a variant samples (after LIGHT_COUNT's field, bits 52-56).
 constexpr uint64_t kSpecularTextures = uint64_t(1) << 57, kTransmissionTextures = uint64_t(1) << 58;
+// KHR_materials_diffuse_transmission's lobe and its textures.
+constexpr uint64_t kDiffuseTransmission = uint64_t(1) << 59, kDiffuseTransmissionTextures = uint64_t(1) << 60;
 // The kinds of light a frame has not; then LIGHT_CONSTANTS (bit 19: the debug view's field was
 // there while it had 4 bits).
 constexpr uint64_t kNoDirectional = 1u << 16, kNoPoint = 1u << 17, kNoSpot = 1u << 18, kLightConstants = 1u << 19;
@@ -122,6 +124,8 @@ constexpr std::array kTable = {
     VariantDefine{kIridescence, kIridescence, "IRIDESCENCE", K::MaterialFeature},
     VariantDefine{kSpecularTextures, kSpecularTextures, "SPECULAR_TEXTURES", K::MaterialFeature},
     VariantDefine{kTransmissionTextures, kTransmissionTextures, "TRANSMISSION_TEXTURES", K::MaterialFeature},
+    VariantDefine{kDiffuseTransmission, kDiffuseTransmission, "DIFFUSE_TRANSMISSION", K::MaterialFeature},
+    VariantDefine{kDiffuseTransmissionTextures, kDiffuseTransmissionTextures, "DIFFUSE_TRANSMISSION_TEXTURES", K::MaterialFeature},
     VariantDefine{kOit, kOit, "OIT", K::FrameFeature},
 };
 static_assert((kFeatureMask & (kIbl | kIblImportance | kEnergyCompensation | kSsao | kDoomIndexed | kShadows | kLightsAll | kDebugMask)) == 0);
@@ -162,6 +166,11 @@ ForwardVariant ForwardVariant::make(uint64_t features, const ResolvedShading& sh
             if (features & SPECULA_MATERIAL_DISPERSION) key |= kDispersion;
             // The transmission and thickness textures scale their factors.
             if (features & SPECULA_MATERIAL_TRANSMISSION_TEXTURES) key |= kTransmissionTextures;
+        }
+        // KHR_materials_diffuse_transmission: the lobe through the surface, in the lit frame only.
+        if ((features & SPECULA_MATERIAL_DIFFUSE_TRANSMISSION) && !doomIndexed && !isMaterialDebugView(debugView)) {
+            key |= kDiffuseTransmission;
+            if (features & SPECULA_MATERIAL_DIFFUSE_TRANSMISSION_TEXTURES) key |= kDiffuseTransmissionTextures;
         }
         // KHR_materials_specular's textures: the dielectric's F0 and F90, in the lit frame and in
         // the views that show Fresnel; an indexed Doom frame reads only the colour.

@@ -438,6 +438,44 @@ TEST(CliViewer, MaterialEditsSurviveAShaderReload)
     EXPECT_EQ(meanDifference(edited, reloaded), 0.0);
 }
 
+// The script's material-diffuse-transmission (the Materials panel's slider and colour): a factor
+// of 0 takes the light through the leaf away (the variant goes), setting it back gives the first
+// frame bit for bit, and an edit survives a shader reload.
+TEST(CliViewer, DiffuseTransmissionEdits)
+{
+    ASSERT_TRUE(haveDisplay()) << "no display: run through scripts/test.sh, which uses Xvfb (a window test must not skip)";
+    const std::string dir = tempDir("viewer-diffuse-transmission");
+    std::ofstream(dir + "/edit.txt") << "frames 1\n"
+                                        "screenshot " << dir << "/before.png\n"
+                                        "material-diffuse-transmission 1 0\n"
+                                        "frames 1\n"
+                                        "screenshot " << dir << "/off.png\n"
+                                        "material-diffuse-transmission 1 0.6 0.55 0.9 0.1\n"
+                                        "frames 1\n"
+                                        "screenshot " << dir << "/on.png\n"
+                                        "material-diffuse-transmission 2 0.9 1 0.1 0.1\n"
+                                        "frames 1\n"
+                                        "screenshot " << dir << "/red.png\n"
+                                        "reload-shaders\n"
+                                        "expect-no-error\n"
+                                        "frames 1\n"
+                                        "screenshot " << dir << "/reloaded.png\n";
+    const auto r = runCli("view " + std::string(SPECULA_SOURCE_DIR) + "/tests/assets/materials/diffuse_transmission_panels.json" +
+                          " --camera 0 --hide-ui --width 360 --height 150 --msaa 1 --script " + dir + "/edit.txt");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto before = specula::readPng(dir + "/before.png");
+    const auto off = specula::readPng(dir + "/off.png");
+    const auto on = specula::readPng(dir + "/on.png");
+    const auto red = specula::readPng(dir + "/red.png");
+    const auto reloaded = specula::readPng(dir + "/reloaded.png");
+    const int w = before.width, h = before.height;
+    // The middle panel (material 1, the leaf lit from behind) darkens without the lobe...
+    EXPECT_GT(meanDifference(before, off, w * 42 / 100, h * 3 / 10, w * 52 / 100, h * 6 / 10), 30.0) << "the leaf did not change";
+    // ...and comes back exactly; the paper (material 2) turns red, and a reload keeps it.
+    EXPECT_EQ(meanDifference(before, on), 0.0);
+    EXPECT_GT(meanDifference(on, red, w * 66 / 100, h * 3 / 10, w * 79 / 100, h * 6 / 10), 10.0) << "the paper did not change";
+    EXPECT_EQ(meanDifference(red, reloaded), 0.0);
+}
 
 // A glTF file's KHR_materials_unlit material in the Materials panel: the panel is drawn for it
 // (shading model "unlit" and what that shows) without a GL error; the window's picture is kept

@@ -157,7 +157,8 @@ TEST_F(GlTest, TheWidestForwardProgramLinksWithinTheTextureUnits)
     }
     // The units above 31 are in it (and the extensions' other textures).
     for (const char* name : {"uSpecularTexture", "uSpecularColorTexture", "uTransmissionTexture", "uThicknessTexture",
-                             "uClearcoatNormalTexture", "uSheenColorTexture", "uAnisotropyTexture", "uIridescenceThicknessTexture"})
+                             "uClearcoatNormalTexture", "uSheenColorTexture", "uAnisotropyTexture", "uIridescenceThicknessTexture",
+                             "uDiffuseTransmissionTexture", "uDiffuseTransmissionColorTexture"})
         EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
     EXPECT_LE(samplers, gl::maxTextureUnits());
     std::printf("the widest forward program: %zu defines, %d samplers (the fragment stage has %d units)\n", defines.size(),
@@ -168,7 +169,8 @@ TEST_F(GlTest, TheWidestForwardProgramLinksWithinTheTextureUnits)
 // edit of a material's features keeps them — a shading switch, a blend mode, a feature bit, the
 // copy a primitive with vertex colours draws with, and blending decided at load. Broken on
 // purpose (2026-12-07): the 32-bit masks of setShading and of the load's blending (~uint32_t
-// clears every bit above 31) failed at every step.
+// clears every bit above 31) failed at every step. KHR_materials_diffuse_transmission's bits
+// (34, 35) are set and cleared by setFeature in the binding alone.
 TEST_F(GlTest, EditsKeepTheExtensionTextureBits)
 {
     scene::Scene s = scene::loadGltf(std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/specular_quad.gltf");
@@ -176,9 +178,12 @@ TEST_F(GlTest, EditsKeepTheExtensionTextureBits)
     s.materials[0].baseColorFactor.a = 0.5f;
     s.materials[0].transmissionFactor = 0.5f;
     s.materials[0].transmissionTexture = s.materials[0].specularTexture;
+    s.materials[0].diffuseTransmissionFactor = 0.5f;
+    s.materials[0].diffuseTransmissionColorTexture = s.materials[0].specularColorTexture;
     s.meshes[0].primitives[0].hasColors = true; // drawn with a copy of its material's record
     render::GpuScene gpu(s);
-    const uint64_t bits = SPECULA_MATERIAL_SPECULAR_TEXTURES | SPECULA_MATERIAL_TRANSMISSION_TEXTURES;
+    const uint64_t bits = SPECULA_MATERIAL_SPECULAR_TEXTURES | SPECULA_MATERIAL_TRANSMISSION_TEXTURES |
+                          SPECULA_MATERIAL_DIFFUSE_TRANSMISSION | SPECULA_MATERIAL_DIFFUSE_TRANSMISSION_TEXTURES;
     const auto check = [&](const char* after) {
         for (size_t record = 0; record < gpu.materials().size(); ++record) {
             if (gpu.materials()[record].textures[size_t(render::TextureSlot::Specular)] == nullptr) continue;
@@ -195,6 +200,15 @@ TEST_F(GlTest, EditsKeepTheExtensionTextureBits)
     gpu.setFeature(0, SPECULA_MATERIAL_CLEARCOAT, true);
     gpu.setFeature(0, SPECULA_MATERIAL_CLEARCOAT, false);
     check("setFeature");
+    // A bit above the record's 32 (the viewer's diffuse transmission slider at 0 and back): the
+    // binding's only, the record's flags untouched.
+    const uint32_t recordFlags = gpu.record(0).flags.x;
+    gpu.setFeature(0, SPECULA_MATERIAL_DIFFUSE_TRANSMISSION, false);
+    EXPECT_EQ(gpu.materials()[0].features & SPECULA_MATERIAL_DIFFUSE_TRANSMISSION, 0u);
+    EXPECT_NE(gpu.materials()[0].features & SPECULA_MATERIAL_DIFFUSE_TRANSMISSION_TEXTURES, 0u);
+    EXPECT_EQ(gpu.record(0).flags.x, recordFlags);
+    gpu.setFeature(0, SPECULA_MATERIAL_DIFFUSE_TRANSMISSION, true);
+    check("setFeature above bit 31");
     int records = 0;
     for (const render::MaterialBinding& m : gpu.materials()) records += m.textures[size_t(render::TextureSlot::Specular)] != nullptr;
     EXPECT_EQ(records, 2); // the material's record and its vertex-colour copy

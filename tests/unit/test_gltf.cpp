@@ -1816,6 +1816,44 @@ TEST(GltfExtensions, SpecularTransmissionAndThicknessTextures)
     EXPECT_EQ(t.thicknessTexture.transform.offset, glm::vec2(0.5f, 0.0f));
 }
 
+// KHR_materials_diffuse_transmission: the factors and both textures (their uv sets and transforms).
+TEST(GltfExtensions, DiffuseTransmissionFactorsAndTextures)
+{
+    const Scene leaf = loadGltf(kTestAssets / "diffuse_transmission_quad.gltf");
+    EXPECT_TRUE(leaf.warnings.empty()) << (leaf.warnings.empty() ? "" : leaf.warnings[0]);
+    ASSERT_EQ(leaf.materials.size(), 1u);
+    const Material& m = leaf.materials[0];
+    EXPECT_FLOAT_EQ(m.diffuseTransmissionFactor, 0.8f);
+    EXPECT_EQ(m.diffuseTransmissionColorFactor, glm::vec3(1.0f, 0.9f, 0.7f));
+    ASSERT_TRUE(m.diffuseTransmissionTexture.valid());
+    ASSERT_TRUE(m.diffuseTransmissionColorTexture.valid());
+    EXPECT_EQ(m.diffuseTransmissionTexture.image, 0);
+    EXPECT_EQ(m.diffuseTransmissionTexture.texCoord, 0);
+    EXPECT_EQ(m.diffuseTransmissionColorTexture.image, 1);
+    EXPECT_EQ(m.diffuseTransmissionColorTexture.texCoord, 1);
+    EXPECT_EQ(m.diffuseTransmissionColorTexture.transform.offset, glm::vec2(0.5f, 0.0f));
+    EXPECT_EQ(leaf.images.at(0).pixels.at(3), 96); // texel 0's alpha
+}
+
+// The extension's defaults (factor 0: none, colour white) and values outside [0, 1], required.
+TEST(GltfExtensions, DiffuseTransmissionDefaultsAndClamps)
+{
+    TempDir dir;
+    GltfBuilder b;
+    b.primitive({{"POSITION", b.vec3(kTriangle)}})["material"] = 1;
+    b.doc["materials"] = {{{"extensions", {{"KHR_materials_diffuse_transmission", json::object()}}}},
+                          {{"extensions", {{"KHR_materials_diffuse_transmission",
+                                            {{"diffuseTransmissionFactor", 1.5}, {"diffuseTransmissionColorFactor", {2.0, -1.0, 0.5}}}}}}}};
+    b.doc["extensionsUsed"] = json::array({"KHR_materials_diffuse_transmission"});
+    b.doc["extensionsRequired"] = json::array({"KHR_materials_diffuse_transmission"});
+    const Scene scene = loadGltf(b.write(dir, "dt.gltf"));
+    EXPECT_TRUE(scene.warnings.empty()) << (scene.warnings.empty() ? "" : scene.warnings[0]);
+    EXPECT_EQ(scene.materials.at(0).diffuseTransmissionFactor, 0.0f);
+    EXPECT_EQ(scene.materials.at(0).diffuseTransmissionColorFactor, glm::vec3(1.0f));
+    EXPECT_EQ(scene.materials.at(1).diffuseTransmissionFactor, 1.0f);
+    EXPECT_EQ(scene.materials.at(1).diffuseTransmissionColorFactor, glm::vec3(1.0f, 0.0f, 0.5f));
+}
+
 TEST(GltfExtensions, SheenDefaultsAndClamps)
 {
     // The extension's defaults (colour black: no sheen, roughness 0) and factors outside [0, 1].

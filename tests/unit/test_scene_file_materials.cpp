@@ -226,3 +226,22 @@ TEST(SceneFileMaterials, TransmissionSceneLoads)
     EXPECT_EQ(transmissive, 3);
     EXPECT_EQ(transparent, 1);
 }
+
+// KHR_materials_diffuse_transmission's factor and colour in a scene file (docs/scene-format.md),
+// their defaults (0, white) and their range errors.
+TEST(SceneFileMaterials, DiffuseTransmission)
+{
+    const SceneDocument d = test::loadSceneText(R"({"shapes": [
+        {"type": "plane", "material": {"diffuseTransmission": 0.4, "diffuseTransmissionColor": [1, 0.5, 0.25]}},
+        {"type": "sphere", "material": {}}]})");
+    ASSERT_EQ(d.scene.materials.size(), 2u);
+    EXPECT_FLOAT_EQ(d.scene.materials[0].diffuseTransmissionFactor, 0.4f);
+    EXPECT_EQ(d.scene.materials[0].diffuseTransmissionColorFactor, glm::vec3(1.0f, 0.5f, 0.25f));
+    EXPECT_EQ(d.scene.materials[1].diffuseTransmissionFactor, 0.0f); // none by default
+    EXPECT_EQ(d.scene.materials[1].diffuseTransmissionColorFactor, glm::vec3(1.0f));
+    auto error = [](const std::string& material) {
+        return test::sceneError(R"({"shapes": [{"type": "sphere", "material": )" + material + "}]}");
+    };
+    EXPECT_NE(error(R"({"diffuseTransmission": 1.5})").find("diffuseTransmission"), std::string::npos);
+    EXPECT_NE(error(R"({"diffuseTransmissionColor": [2, 0, 0]})").find("diffuseTransmissionColor"), std::string::npos);
+}

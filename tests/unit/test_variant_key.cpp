@@ -212,4 +212,12 @@ TEST(VariantKey, ExtensionTexturesAboveTheRecordsBits)
     EXPECT_TRUE(has(make(transmission, DebugView::None), "TRANSMISSION_TEXTURES"));
     EXPECT_FALSE(has(make(SPECULA_MATERIAL_TRANSMISSION_TEXTURES, DebugView::None), "TRANSMISSION_TEXTURES"));
     EXPECT_FALSE(has(make(transmission, DebugView::Normal), "TRANSMISSION_TEXTURES"));
+    // KHR_materials_diffuse_transmission: the lobe in the lit frame only, its textures with it.
+    const uint64_t diffuse = SPECULA_MATERIAL_DIFFUSE_TRANSMISSION | SPECULA_MATERIAL_DIFFUSE_TRANSMISSION_TEXTURES;
+    EXPECT_EQ(uint32_t(diffuse), 0u);
+    EXPECT_TRUE(has(make(diffuse, DebugView::None), "DIFFUSE_TRANSMISSION"));
+    EXPECT_TRUE(has(make(diffuse, DebugView::None), "DIFFUSE_TRANSMISSION_TEXTURES"));
+    EXPECT_FALSE(has(make(SPECULA_MATERIAL_DIFFUSE_TRANSMISSION_TEXTURES, DebugView::None), "DIFFUSE_TRANSMISSION_TEXTURES"));
+    EXPECT_FALSE(has(make(diffuse, DebugView::BaseColor), "DIFFUSE_TRANSMISSION"));
+    EXPECT_FALSE(has(make(diffuse, DebugView::None, true), "DIFFUSE_TRANSMISSION"));
 }
