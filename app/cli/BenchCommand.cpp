@@ -85,12 +85,12 @@ int runBench(const BenchArgs& args)
             s.settings = setup::resolveSettings(s.document, args.frame);
             const auto environment = setup::loadEnvironment(s.document, args.frame);
             s.environment = environment.has_value();
-            s.view = setup::prepareView(s.document, args.frame, s.settings, nullptr, s.environment);
+            const setup::AnimationChoice animation = setup::resolveAnimation(s.document.scene, args.frame);
+            s.view = setup::prepareView(s.document, args.frame, s.settings, nullptr, s.environment, animation);
             s.loadMs = startup.elapsedMs() - s.contextMs;
             s.renderer = std::make_unique<render::Renderer>();
             s.renderer->setCacheDirectory(cache);
             s.renderer->setScene(s.document.scene);
-            const setup::AnimationChoice animation = setup::resolveAnimation(s.document.scene, args.frame);
             s.renderer->setPose(animation.index, animation.seconds);
             s.renderer->setVariant(setup::resolveVariant(s.document.scene, args.frame));
             if (environment) s.bake = s.renderer->setEnvironment(*environment, setup::resolveBakeSettings(args.frame), cache);

@@ -46,14 +46,14 @@ int runGallery(const GalleryArgs& args)
     // A scene without lights gets the default rig even under an environment (which `render`
     // would light it with alone): the classic models take no specular light from an
     // environment, and without a light their tiles would all show the same ambient term.
-    const render::View view = setup::prepareView(document, options, base, nullptr, /*hasEnvironment=*/false);
+    const setup::AnimationChoice animation = setup::resolveAnimation(document.scene, options);
+    const render::View view = setup::prepareView(document, options, base, nullptr, /*hasEnvironment=*/false, animation);
 
     auto context = platform::Context::createHeadless();
     gl::DebugMonitor debug;
     render::Renderer renderer;
     renderer.setCacheDirectory(setup::cacheDirectory(options));
     renderer.setScene(document.scene);
-    const setup::AnimationChoice animation = setup::resolveAnimation(document.scene, options);
     renderer.setPose(animation.index, animation.seconds);
     renderer.setVariant(setup::resolveVariant(document.scene, options));
     if (environment) renderer.setEnvironment(*environment, setup::resolveBakeSettings(options), setup::cacheDirectory(options));

@@ -104,7 +104,7 @@ int runRender(const RenderArgs& args)
             setup::FrameOptions options = args.frame;
             options.camera = camera;
             Shot shot;
-            shot.view = setup::prepareView(s.document, options, s.settings, &defaultLights, s.environment.has_value());
+            shot.view = setup::prepareView(s.document, options, s.settings, &defaultLights, s.environment.has_value(), s.animation);
             const std::string cameraName = camera >= 0 ? std::to_string(camera) : "framed";
             shot.output = patterned ? expandOutput(args.output, s.name, cameraName) : std::filesystem::path(args.output);
             shot.label = args.frame.allCameras ? s.name + " camera " + cameraName : s.name;

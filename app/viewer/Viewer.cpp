@@ -18,6 +18,7 @@
 #include "gl/State.h"
 #include "platform/Context.h"
 #include "scene/Picking.h"
+#include "scene/Pose.h"
 #include "shading/SunExtraction.h"
 
 namespace specula::viewer {
@@ -230,7 +231,14 @@ void Viewer::renderFrame(float deltaSeconds)
     mSettings.autoExposure.deltaTime = deltaSeconds;
     mSettings.selectedLight = selectedLight;
     const float aspect = float(size.x) / float(size.y);
-    const render::View view = mSceneCamera >= 0 ? render::cameraView(mDocument.scene, mSceneCamera, aspect) : mCamera.view(aspect);
+    render::View view;
+    if (mSceneCamera >= 0) {
+        // A scene camera follows the animation (its node, and KHR_animation_pointer's properties).
+        const scene::Pose pose = scene::poseAt(mDocument.scene, mPosed ? mPosed->first : -1, mPosed ? mPosed->second : 0.0f);
+        view = render::cameraView(mDocument.scene, mSceneCamera, aspect, &pose);
+    } else {
+        view = mCamera.view(aspect);
+    }
     mLastView = view;
     mLastSize = glm::vec2(size);
     // The pass times are for the stats panel: with the panels hidden nobody reads them, and

@@ -117,13 +117,40 @@ constexpr std::array<SlotFormat, size_t(TextureSlot::Count)> kSlots{{
 }};
 static_assert(scene::kMaterialTextures.size() == kSlots.size(), "one slot for every texture of scene::Material");
 
-void packTransform(shared::GpuMaterial& gpu, int slot, const scene::TextureRef& ref)
+void packTransformRows(shared::GpuMaterial& gpu, int slot, const scene::UvTransform& transform)
 {
     // Rows of the 2x3 affine part of KHR_texture_transform's 3x3 matrix.
-    const glm::mat3 m = ref.transform.matrix();
+    const glm::mat3 m = transform.matrix();
     gpu.uvTransform[2 * slot] = glm::vec4(m[0][0], m[1][0], m[2][0], 0.0f);
     gpu.uvTransform[2 * slot + 1] = glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f);
+}
+
+void packTransform(shared::GpuMaterial& gpu, int slot, const scene::TextureRef& ref)
+{
+    packTransformRows(gpu, slot, ref.transform);
     (slot < 16 ? gpu.flags.y : gpu.flags.z) |= uint32_t(ref.texCoord & 3) << (2 * (slot % 16));
+}
+
+/// A material's factors in its record (everything a material's numbers set; not the flags,
+/// the alpha cutoff, the texture transforms or the classic models' ks): at load, and again for
+/// an animated material's animated fields (GpuScene::setAnimatedFields).
+void packFactors(const scene::Material& m, shared::GpuMaterial& gpu)
+{
+    gpu.baseColorFactor = m.baseColorFactor;
+    gpu.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, float(m.sectorLight) / 255.0f);
+    gpu.params = glm::vec4(m.metallicFactor, m.roughnessFactor, m.normalScale, m.occlusionStrength);
+    gpu.specular = glm::vec4(m.specularColorFactor, m.specularFactor);
+    // KHR_materials_ior: the shader's dielectric F0 is 0.04 x specular.rgb (x factor).
+    if (m.ior) gpu.specular = glm::vec4(m.specularColorFactor * (scene::f0FromIor(*m.ior) / 0.04f), m.specularFactor);
+    gpu.transmission = glm::vec4(m.transmissionFactor, m.ior.value_or(1.5f), m.thickness, m.attenuationDistance);
+    gpu.attenuation = glm::vec4(m.attenuationColor, m.dispersion);
+    gpu.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughnessFactor, m.clearcoatNormalScale, 0.0f);
+    gpu.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughnessFactor);
+    // The rotation as its cosine and sine: the shader turns the direction with them (w: the
+    // texture's flag, set with the textures).
+    gpu.anisotropy = glm::vec4(m.anisotropyStrength, std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), gpu.anisotropy.w);
+    gpu.iridescence = glm::vec4(m.iridescenceFactor, m.iridescenceIor, m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum);
+    gpu.diffuseTransmission = glm::vec4(m.diffuseTransmissionColorFactor, m.diffuseTransmissionFactor);
 }
 
 struct SharedLodChain {
@@ -275,21 +302,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
     std::vector<shared::GpuMaterial> gpuMaterials;
     for (const scene::Material& m : materials) {
         shared::GpuMaterial gpu{};
-        gpu.baseColorFactor = m.baseColorFactor;
-        gpu.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, float(m.sectorLight) / 255.0f);
-        gpu.params = glm::vec4(m.metallicFactor, m.roughnessFactor, m.normalScale, m.occlusionStrength);
+        packFactors(m, gpu);
         gpu.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
-        gpu.specular = glm::vec4(m.specularColorFactor, m.specularFactor);
-        // KHR_materials_ior: the shader's dielectric F0 is 0.04 x specular.rgb (x factor).
-        if (m.ior) gpu.specular = glm::vec4(m.specularColorFactor * (scene::f0FromIor(*m.ior) / 0.04f), m.specularFactor);
-        gpu.transmission = glm::vec4(m.transmissionFactor, m.ior.value_or(1.5f), m.thickness, m.attenuationDistance);
-        gpu.attenuation = glm::vec4(m.attenuationColor, m.dispersion);
-        gpu.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughnessFactor, m.clearcoatNormalScale, 0.0f);
-        gpu.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughnessFactor);
-        // The rotation as its cosine and sine: the shader turns the direction with them.
-        gpu.anisotropy = glm::vec4(m.anisotropyStrength, std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), 0.0f);
-        gpu.iridescence = glm::vec4(m.iridescenceFactor, m.iridescenceIor, m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum);
-        gpu.diffuseTransmission = glm::vec4(m.diffuseTransmissionColorFactor, m.diffuseTransmissionFactor);
         // Classic models' specular colour: mid grey, a plastic highlight (Phong 1975's ks).
         gpu.phong = glm::vec4(glm::vec3(0.5f), m.shininess);
         for (int slot = 0; slot < int(TextureSlot::Count); ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
@@ -452,6 +466,17 @@ GpuScene::GpuScene(const scene::Scene& scene)
         mRig->meshes = scene.meshes;
         mRig->skins = scene.skins;
         mRig->animations = scene.animations;
+        // KHR_animation_pointer: what posing writes into materials and lights starts from these.
+        for (const scene::AnimatedProperty& p : scene::animatedProperties(scene)) {
+            if (scene::isLightField(p.field)) continue;
+            if (p.index < 0 || size_t(p.index) >= scene.materials.size()) continue; // the importer refuses these
+            auto same = std::find_if(mAnimatedMaterials.begin(), mAnimatedMaterials.end(),
+                                     [&](const AnimatedMaterial& a) { return a.material == p.index; });
+            if (same == mAnimatedMaterials.end()) same = mAnimatedMaterials.insert(mAnimatedMaterials.end(), {p.index, {}});
+            same->fields.push_back(p);
+        }
+        if (!mAnimatedMaterials.empty()) mRig->materials = scene.materials;
+        mRig->lights = scene.lights;
     }
     for (const scene::MeshInstance& instance : scene.meshInstances()) {
         const auto& sourcePrimitives = scene.meshes[size_t(instance.mesh)].primitives;
@@ -523,6 +548,12 @@ size_t GpuScene::setPose(int animation, float seconds)
     if (!mRig) return 0;
     const scene::Scene& rig = *mRig;
     const scene::Pose pose = scene::poseAt(rig, animation, seconds);
+    // KHR_animation_pointer: the materials and lights as the animation sets them. Every property
+    // any animation sets starts from the file's value, so switching animations leaves none behind.
+    std::vector<scene::Material> materials = rig.materials;
+    mPosedLights = rig.lights;
+    scene::applyProperties(pose, materials, mPosedLights);
+    for (const AnimatedMaterial& a : mAnimatedMaterials) setAnimatedFields(a.material, materials[size_t(a.material)], a.fields);
     const std::vector<glm::mat4> world = scene::worldMatrices(rig, pose);
     for (size_t d = 0; d < mDraws.size(); ++d) {
         DrawItem& item = mDraws[d];
@@ -604,6 +635,7 @@ void GpuScene::setFeature(int material, uint64_t bit, bool on)
     for (size_t record = 0; record < mMaterials.size(); ++record) {
         if (mRecordMaterial[record] != material) continue;
         MaterialBinding& binding = mMaterials[record];
+        if (((binding.features & bit) != 0) == on) continue; // nothing to write
         binding.features = on ? binding.features | bit : binding.features & ~bit;
         // Bits above the record's 32 live in the binding only (MaterialData.h).
         const uint32_t recordBit = uint32_t(bit);
@@ -613,17 +645,100 @@ void GpuScene::setFeature(int material, uint64_t bit, bool on)
     }
 }
 
-void GpuScene::writeMaterial(int material, size_t offset, size_t size, const void* data)
+namespace {
+
+/// The floats of a material's record an animated field is packed into (packFactors): a first
+/// float and a count, twice where a field reaches two places (the ior: F0 and refraction).
+struct RecordRange {
+    size_t offset = 0, size = 0;
+};
+std::array<RecordRange, 2> recordRanges(const scene::AnimatedProperty& p)
+{
+    using shared::GpuMaterial;
+    using F = scene::AnimatedField;
+    constexpr size_t f = sizeof(float);
+    const auto at = [](size_t vec4, int first, int count) { return RecordRange{vec4 + size_t(first) * f, size_t(count) * f}; };
+    switch (p.field) {
+    case F::BaseColor: return {at(offsetof(GpuMaterial, baseColorFactor), 0, 4)};
+    case F::Metallic: return {at(offsetof(GpuMaterial, params), 0, 1)};
+    case F::Roughness: return {at(offsetof(GpuMaterial, params), 1, 1)};
+    case F::Emissive:
+    case F::EmissiveStrength: return {at(offsetof(GpuMaterial, emissive), 0, 3)};
+    case F::SpecularFactor: return {at(offsetof(GpuMaterial, specular), 3, 1)};
+    case F::SpecularColor: return {at(offsetof(GpuMaterial, specular), 0, 3)};
+    case F::Ior: return {at(offsetof(GpuMaterial, specular), 0, 3), at(offsetof(GpuMaterial, transmission), 1, 1)};
+    case F::ClearcoatFactor: return {at(offsetof(GpuMaterial, clearcoat), 0, 1)};
+    case F::ClearcoatRoughness: return {at(offsetof(GpuMaterial, clearcoat), 1, 1)};
+    case F::SheenColor: return {at(offsetof(GpuMaterial, sheen), 0, 3)};
+    case F::SheenRoughness: return {at(offsetof(GpuMaterial, sheen), 3, 1)};
+    case F::AnisotropyStrength: return {at(offsetof(GpuMaterial, anisotropy), 0, 1)};
+    case F::AnisotropyRotation: return {at(offsetof(GpuMaterial, anisotropy), 1, 2)};
+    case F::IridescenceFactor: return {at(offsetof(GpuMaterial, iridescence), 0, 1)};
+    case F::IridescenceIor: return {at(offsetof(GpuMaterial, iridescence), 1, 1)};
+    case F::IridescenceThicknessMinimum: return {at(offsetof(GpuMaterial, iridescence), 2, 1)};
+    case F::IridescenceThicknessMaximum: return {at(offsetof(GpuMaterial, iridescence), 3, 1)};
+    case F::DiffuseTransmission: return {at(offsetof(GpuMaterial, diffuseTransmission), 3, 1)};
+    case F::DiffuseTransmissionColor: return {at(offsetof(GpuMaterial, diffuseTransmission), 0, 3)};
+    case F::Dispersion: return {at(offsetof(GpuMaterial, attenuation), 3, 1)};
+    case F::TextureOffset:
+    case F::TextureRotation:
+    case F::TextureScale: // both rows of the texture's transform
+        return {at(offsetof(GpuMaterial, uvTransform) + size_t(std::max(p.texture, 0)) * 2 * 4 * f, 0, 8)};
+    default: return {};
+    }
+}
+
+} // namespace
+
+void GpuScene::setAnimatedFields(int material, const scene::Material& m, const std::vector<scene::AnimatedProperty>& fields)
+{
+    for (size_t record = 0; record < mRecords.size(); ++record) {
+        if (mRecordMaterial[record] != material) continue;
+        shared::GpuMaterial next = mRecords[record];
+        packFactors(m, next);
+        for (size_t slot = 0; slot < scene::kMaterialTextures.size(); ++slot)
+            if ((m.*scene::kMaterialTextures[slot]).valid()) packTransformRows(next, int(slot), (m.*scene::kMaterialTextures[slot]).transform);
+        // Only the animated fields' floats, and only those that changed: the viewer's edits of
+        // the others stay.
+        const auto* before = reinterpret_cast<const std::byte*>(&mRecords[record]);
+        const auto* after = reinterpret_cast<const std::byte*>(&next);
+        for (const scene::AnimatedProperty& p : fields)
+            for (const RecordRange& r : recordRanges(p))
+                if (r.size > 0 && std::memcmp(before + r.offset, after + r.offset, r.size) != 0)
+                    writeRecord(record, r.offset, r.size, after + r.offset);
+    }
+    // A factor of 0 is no layer at all, as at load: the variants follow the animated factors.
+    for (const scene::AnimatedProperty& p : fields) {
+        using F = scene::AnimatedField;
+        switch (p.field) {
+        case F::ClearcoatFactor: setFeature(material, SPECULA_MATERIAL_CLEARCOAT, m.clearcoatFactor > 0.0f); break;
+        case F::SheenColor:
+            setFeature(material, SPECULA_MATERIAL_SHEEN, glm::any(glm::greaterThan(m.sheenColorFactor, glm::vec3(0.0f))));
+            break;
+        case F::AnisotropyStrength: setFeature(material, SPECULA_MATERIAL_ANISOTROPY, m.anisotropyStrength > 0.0f); break;
+        case F::IridescenceFactor: setFeature(material, SPECULA_MATERIAL_IRIDESCENCE, m.iridescenceFactor > 0.0f); break;
+        case F::Dispersion: setFeature(material, SPECULA_MATERIAL_DISPERSION, m.dispersion > 0.0f && m.thickness > 0.0f); break;
+        case F::DiffuseTransmission:
+            setFeature(material, SPECULA_MATERIAL_DIFFUSE_TRANSMISSION, m.diffuseTransmissionFactor > 0.0f);
+            break;
+        default: break;
+        }
+    }
+}
+
+void GpuScene::writeRecord(size_t record, size_t offset, size_t size, const void* data)
 {
     // The base colour's alpha decides whether a blended material is drawn opaque.
     constexpr size_t alpha = offsetof(shared::GpuMaterial, baseColorFactor) + 3 * sizeof(float);
-    const bool writesAlpha = offset <= alpha && alpha < offset + size;
-    for (size_t record = 0; record < mRecords.size(); ++record) {
-        if (mRecordMaterial[record] != material) continue;
-        std::memcpy(reinterpret_cast<std::byte*>(&mRecords[record]) + offset, data, size);
-        mMaterialBuffer.update(materialOffset(int(record)) + offset, size, data);
-        if (writesAlpha) updateCoverage(record);
-    }
+    std::memcpy(reinterpret_cast<std::byte*>(&mRecords[record]) + offset, data, size);
+    mMaterialBuffer.update(materialOffset(int(record)) + offset, size, data);
+    if (offset <= alpha && alpha < offset + size) updateCoverage(record);
+}
+
+void GpuScene::writeMaterial(int material, size_t offset, size_t size, const void* data)
+{
+    for (size_t record = 0; record < mRecords.size(); ++record)
+        if (mRecordMaterial[record] == material) writeRecord(record, offset, size, data);
 }
 
 } // namespace specula::render

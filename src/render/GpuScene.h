@@ -124,6 +124,11 @@ public:
     /// factor 0, a black sheen, anisotropy of strength 0, a film of factor 0: the variant goes,
     /// and its textures). Bits above 31 are the binding's only (MaterialData.h).
     void setFeature(int material, uint64_t bit, bool on);
+    /// KHR_animation_pointer: rewrites the animated `fields` of `material` from `m`, its posed
+    /// copy (the floats that changed, in every record it has; the other fields keep what they
+    /// hold, a viewer's edits included), and the variant bits those factors switch (a
+    /// clearcoat, sheen, anisotropy, film or diffuse transmission at 0 or not).
+    void setAnimatedFields(int material, const scene::Material& m, const std::vector<scene::AnimatedProperty>& fields);
     /// Writes `size` bytes at `offset` within `material`'s record (and its copies'), in the
     /// CPU copy and in the buffer: no other byte of the buffer is written.
     void writeMaterial(int material, size_t offset, size_t size, const void* data);
@@ -150,6 +155,9 @@ public:
 
     /// Every node's world matrix at the last setPose (empty before one, and for a static scene).
     const std::vector<glm::mat4>& nodeWorlds() const { return mNodeWorlds; }
+    /// The scene's lights at the last setPose, KHR_animation_pointer's properties applied (empty
+    /// before one, and for a static scene).
+    const std::vector<scene::Light>& posedLights() const { return mPosedLights; }
 
 private:
     const gl::Texture* texture(const scene::Scene& scene, int image, bool srgb);
@@ -158,6 +166,8 @@ private:
     /// Draws record `record` opaque or blended (MaterialBinding::alphaMode) from its declared
     /// mode, its texels and its factor's alpha as the record holds it; its variant key follows.
     void updateCoverage(size_t record);
+    /// One record's bytes, in the CPU copy and in the buffer (and its coverage when the alpha changes).
+    void writeRecord(size_t record, size_t offset, size_t size, const void* data);
 
     /// What posing needs of the scene: its nodes, meshes, skins and animations (no images).
     std::optional<scene::Scene> mRig;
@@ -172,6 +182,13 @@ private:
     std::vector<DeformedDraw> mDeformed;
     std::vector<scene::Vertex> mScratch;
     std::vector<glm::mat4> mNodeWorlds;
+    /// The materials KHR_animation_pointer animates, and what of each.
+    struct AnimatedMaterial {
+        int material = 0;
+        std::vector<scene::AnimatedProperty> fields;
+    };
+    std::vector<AnimatedMaterial> mAnimatedMaterials;
+    std::vector<scene::Light> mPosedLights;
 
     std::vector<GpuPrimitive> mPrimitives;
     std::vector<MaterialBinding> mMaterials;

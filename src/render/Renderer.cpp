@@ -125,6 +125,7 @@ struct Renderer::Impl {
     /// The node that places each light, while the lights are the scene's (setScene; setLights
     /// replaces them): setPose moves them with their nodes.
     std::vector<int> lightNodes;
+    std::vector<int> lightIndices; ///< per buffer slot: the scene's light (with lightNodes)
 
     /// The last frame: its exported textures stay readable until the next one.
     std::unique_ptr<Frame> last;
@@ -220,7 +221,11 @@ void Renderer::setScene(const scene::Scene& scene)
     mImpl->passes.billboards.setScene(scene);
     mImpl->stores.lights.setAll(placeLights(scene));
     mImpl->lightNodes.clear();
-    for (const scene::LightInstance& instance : scene.lightInstances()) mImpl->lightNodes.push_back(instance.node);
+    mImpl->lightIndices.clear();
+    for (const scene::LightInstance& instance : scene.lightInstances()) {
+        mImpl->lightNodes.push_back(instance.node);
+        mImpl->lightIndices.push_back(instance.light);
+    }
 }
 
 void Renderer::setVariant(int variant)
@@ -235,18 +240,30 @@ void Renderer::setPose(int animation, float seconds)
     if (!gpu || !gpu->animated()) return;
     gpu->setPose(animation, seconds);
     ++mImpl->stores.casterVersion; // the casters may have moved: no shadow map is kept
-    // Lights on animated nodes move with them (as Scene::lightInstances places them).
+    // Lights on animated nodes move with them (as Scene::lightInstances places them), and take
+    // the properties KHR_animation_pointer gives them.
     const std::vector<glm::mat4>& world = gpu->nodeWorlds();
+    const std::vector<scene::Light>& posed = gpu->posedLights();
     LightBuffer& lights = mImpl->stores.lights;
     for (size_t i = 0; i < mImpl->lightNodes.size() && int(i) < lights.count(); ++i) {
         const size_t node = size_t(mImpl->lightNodes[i]);
         if (node >= world.size()) continue;
         PlacedLight placed = lights.light(int(i));
-        const glm::vec3 position(world[node][3]);
-        const glm::vec3 direction = glm::normalize(glm::vec3(world[node] * glm::vec4(0, 0, -1, 0)));
-        if (placed.position == position && placed.direction == direction) continue;
-        placed.position = position;
-        placed.direction = direction;
+        const PlacedLight before = placed;
+        placed.position = glm::vec3(world[node][3]);
+        placed.direction = glm::normalize(glm::vec3(world[node] * glm::vec4(0, 0, -1, 0)));
+        if (const size_t light = size_t(mImpl->lightIndices[i]); light < posed.size()) {
+            placed.light.color = posed[light].color;
+            placed.light.intensity = posed[light].intensity;
+            placed.light.range = posed[light].range;
+            placed.light.innerConeAngle = posed[light].innerConeAngle;
+            placed.light.outerConeAngle = posed[light].outerConeAngle;
+        }
+        const scene::Light& a = before.light;
+        const scene::Light& b = placed.light;
+        if (before.position == placed.position && before.direction == placed.direction && a.color == b.color &&
+            a.intensity == b.intensity && a.range == b.range && a.innerConeAngle == b.innerConeAngle && a.outerConeAngle == b.outerConeAngle)
+            continue;
         lights.set(int(i), placed);
     }
 }
@@ -662,6 +679,7 @@ const PlacedLight& Renderer::light(int index) const
 void Renderer::setLights(const std::vector<PlacedLight>& lights)
 {
     mImpl->lightNodes.clear(); // no longer the scene's: an animation does not move them
+    mImpl->lightIndices.clear();
     mImpl->stores.lights.setAll(lights);
 }
 

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/Error.h"
+#include "scene/Pose.h"
 
 namespace specula::render {
 
@@ -17,13 +18,19 @@ View lookAtView(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float yfov, float
     return v;
 }
 
-View cameraView(const scene::Scene& scene, int index, float aspect)
+View cameraView(const scene::Scene& scene, int index, float aspect, const scene::Pose* pose)
 {
     const auto cameras = scene.cameraInstances();
     if (index < 0 || size_t(index) >= cameras.size())
         throw Error("camera {} does not exist (the scene has {} camera{})", index, cameras.size(), cameras.size() == 1 ? "" : "s");
-    const scene::CameraInstance& instance = cameras[size_t(index)];
-    const scene::Camera& camera = scene.cameras[size_t(instance.camera)];
+    scene::CameraInstance instance = cameras[size_t(index)];
+    scene::Camera camera = scene.cameras[size_t(instance.camera)];
+    if (pose) {
+        // An animated camera: its node where the pose puts it, its properties as the pose sets them.
+        const std::vector<glm::mat4> world = scene::worldMatrices(scene, *pose);
+        if (size_t(instance.node) < world.size()) instance.world = world[size_t(instance.node)];
+        camera = scene::posedCamera(scene, *pose, instance.camera);
+    }
     // Remove scale from the node's world matrix: a camera's frame is rigid.
     glm::mat4 rigid(1.0f);
     rigid[0] = glm::vec4(glm::normalize(glm::vec3(instance.world[0])), 0.0f);
@@ -65,10 +72,10 @@ View frameBounds(const scene::Bounds& bounds, float aspect, float yfov)
                       distance + radius * 2.0f);
 }
 
-View defaultView(const scene::Scene& scene, int index, float aspect)
+View defaultView(const scene::Scene& scene, int index, float aspect, const scene::Pose* pose)
 {
-    if (index >= 0) return cameraView(scene, index, aspect);
-    if (!scene.cameraInstances().empty()) return cameraView(scene, 0, aspect);
+    if (index >= 0) return cameraView(scene, index, aspect, pose);
+    if (!scene.cameraInstances().empty()) return cameraView(scene, 0, aspect, pose);
     return frameBounds(scene.worldBounds(), aspect);
 }
 

@@ -4,6 +4,10 @@
 
 #include "scene/Scene.h"
 
+namespace specula::scene {
+struct Pose;
+}
+
 namespace specula::render {
 
 struct View {
@@ -14,14 +18,16 @@ struct View {
 
 /// The scene's camera `index` (in Scene::cameraInstances() order) for a viewport of `aspect`.
 /// The viewport's aspect wins over the camera's aspectRatio so images are never stretched.
-/// Throws specula::Error when there is no such camera.
-View cameraView(const scene::Scene& scene, int index, float aspect);
+/// `pose`: an animation's (scene/Pose.h): the camera's node where the pose puts it, and its
+/// KHR_animation_pointer properties; none: the rest pose. Throws specula::Error when there is
+/// no such camera.
+View cameraView(const scene::Scene& scene, int index, float aspect, const scene::Pose* pose = nullptr);
 
 /// A perspective view that frames `bounds` from the front (+Z), slightly above.
 View frameBounds(const scene::Bounds& bounds, float aspect, float yfov = glm::radians(45.0f));
 
 /// cameraView(index) if index >= 0; else the first camera; else frameBounds(scene bounds).
-View defaultView(const scene::Scene& scene, int index, float aspect);
+View defaultView(const scene::Scene& scene, int index, float aspect, const scene::Pose* pose = nullptr);
 
 View lookAtView(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float yfov, float aspect, float znear, float zfar);
 

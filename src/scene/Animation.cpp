@@ -5,6 +5,31 @@
 
 namespace specula::scene {
 
+int animatedFieldComponents(AnimatedField field)
+{
+    switch (field) {
+    case AnimatedField::BaseColor: return 4;
+    case AnimatedField::Emissive:
+    case AnimatedField::SpecularColor:
+    case AnimatedField::SheenColor:
+    case AnimatedField::DiffuseTransmissionColor:
+    case AnimatedField::LightColor: return 3;
+    case AnimatedField::TextureOffset:
+    case AnimatedField::TextureScale: return 2;
+    default: return 1;
+    }
+}
+
+bool isLightField(AnimatedField field)
+{
+    return field >= AnimatedField::LightColor && field <= AnimatedField::SpotOuterConeAngle;
+}
+
+bool isCameraField(AnimatedField field)
+{
+    return field >= AnimatedField::CameraYfov;
+}
+
 float Animation::duration() const
 {
     float end = 0.0f;

@@ -12,7 +12,36 @@
 namespace specula::scene {
 
 enum class Interpolation { Step, Linear, CubicSpline };
-enum class AnimationPath { Translation, Rotation, Scale, Weights };
+enum class AnimationPath { Translation, Rotation, Scale, Weights, Property };
+
+/// What a KHR_animation_pointer channel animates besides a node's transform and weights: a
+/// material's factor, a texture's KHR_texture_transform, a KHR_lights_punctual light's property
+/// or a camera's (scene/Pose.h applyProperties and posedCamera write it into a copy of the
+/// material, light or camera).
+enum class AnimatedField : uint8_t {
+    // Materials (Material's fields of the same names).
+    BaseColor, Metallic, Roughness, Emissive, EmissiveStrength, SpecularFactor, SpecularColor, Ior,
+    ClearcoatFactor, ClearcoatRoughness, SheenColor, SheenRoughness, AnisotropyStrength, AnisotropyRotation,
+    IridescenceFactor, IridescenceIor, IridescenceThicknessMinimum, IridescenceThicknessMaximum,
+    DiffuseTransmission, DiffuseTransmissionColor, Dispersion,
+    // A material's texture (AnimatedProperty::texture) KHR_texture_transform.
+    TextureOffset, TextureRotation, TextureScale,
+    // Lights.
+    LightColor, LightIntensity, LightRange, SpotInnerConeAngle, SpotOuterConeAngle,
+    // Cameras (scene/Pose.h posedCamera).
+    CameraYfov, CameraZnear, CameraZfar, CameraXmag, CameraYmag,
+};
+/// The floats a field's keyframes hold (4: base colour; 3: colours; 2: texture offset, scale).
+int animatedFieldComponents(AnimatedField field);
+bool isLightField(AnimatedField field);
+bool isCameraField(AnimatedField field);
+
+struct AnimatedProperty {
+    AnimatedField field = AnimatedField::BaseColor;
+    int index = 0;    ///< the material's, light's or camera's index in the scene
+    int texture = -1; ///< texture transforms: the texture's index in kMaterialTextures (Scene.h)
+    bool operator==(const AnimatedProperty&) const = default;
+};
 
 /// Keyframes: `times` in seconds, strictly increasing; per keyframe `components` floats of
 /// `values` (Step, Linear), or three groups of them for CubicSpline: in-tangent, value,
@@ -27,8 +56,9 @@ struct AnimationSampler {
 
 struct AnimationChannel {
     int sampler = 0; ///< index into its Animation::samplers
-    int node = 0;    ///< index into Scene::nodes
+    int node = 0;    ///< index into Scene::nodes (-1 for AnimationPath::Property)
     AnimationPath path = AnimationPath::Translation;
+    AnimatedProperty property; ///< AnimationPath::Property only (KHR_animation_pointer)
 };
 
 struct Animation {

@@ -2,6 +2,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
+#include <optional>
+#include <string_view>
 
 #include "scene/GltfInternal.h"
 
@@ -16,8 +19,153 @@ const char* pathName(AnimationPath path)
     case AnimationPath::Rotation: return "rotation";
     case AnimationPath::Scale: return "scale";
     case AnimationPath::Weights: return "weights";
+    case AnimationPath::Property: return "pointer";
     }
     return "?";
+}
+
+// KHR_animation_pointer: the material properties Specula animates, by their path below
+// /materials/{i}/.
+struct MaterialPointer {
+    std::string_view path;
+    AnimatedField field;
+};
+constexpr MaterialPointer kMaterialPointers[] = {
+    {"pbrMetallicRoughness/baseColorFactor", AnimatedField::BaseColor},
+    {"pbrMetallicRoughness/metallicFactor", AnimatedField::Metallic},
+    {"pbrMetallicRoughness/roughnessFactor", AnimatedField::Roughness},
+    {"emissiveFactor", AnimatedField::Emissive},
+    {"extensions/KHR_materials_emissive_strength/emissiveStrength", AnimatedField::EmissiveStrength},
+    {"extensions/KHR_materials_specular/specularFactor", AnimatedField::SpecularFactor},
+    {"extensions/KHR_materials_specular/specularColorFactor", AnimatedField::SpecularColor},
+    {"extensions/KHR_materials_ior/ior", AnimatedField::Ior},
+    {"extensions/KHR_materials_clearcoat/clearcoatFactor", AnimatedField::ClearcoatFactor},
+    {"extensions/KHR_materials_clearcoat/clearcoatRoughnessFactor", AnimatedField::ClearcoatRoughness},
+    {"extensions/KHR_materials_sheen/sheenColorFactor", AnimatedField::SheenColor},
+    {"extensions/KHR_materials_sheen/sheenRoughnessFactor", AnimatedField::SheenRoughness},
+    {"extensions/KHR_materials_anisotropy/anisotropyStrength", AnimatedField::AnisotropyStrength},
+    {"extensions/KHR_materials_anisotropy/anisotropyRotation", AnimatedField::AnisotropyRotation},
+    {"extensions/KHR_materials_iridescence/iridescenceFactor", AnimatedField::IridescenceFactor},
+    {"extensions/KHR_materials_iridescence/iridescenceIor", AnimatedField::IridescenceIor},
+    {"extensions/KHR_materials_iridescence/iridescenceThicknessMinimum", AnimatedField::IridescenceThicknessMinimum},
+    {"extensions/KHR_materials_iridescence/iridescenceThicknessMaximum", AnimatedField::IridescenceThicknessMaximum},
+    {"extensions/KHR_materials_diffuse_transmission/diffuseTransmissionFactor", AnimatedField::DiffuseTransmission},
+    {"extensions/KHR_materials_diffuse_transmission/diffuseTransmissionColorFactor", AnimatedField::DiffuseTransmissionColor},
+    {"extensions/KHR_materials_dispersion/dispersion", AnimatedField::Dispersion},
+};
+// Each texture's textureInfo below /materials/{i}/, in the order of kMaterialTextures (Scene.h).
+constexpr std::string_view kTexturePointers[] = {
+    "pbrMetallicRoughness/baseColorTexture",
+    "pbrMetallicRoughness/metallicRoughnessTexture",
+    "normalTexture",
+    "occlusionTexture",
+    "emissiveTexture",
+    "extensions/KHR_materials_clearcoat/clearcoatTexture",
+    "extensions/KHR_materials_clearcoat/clearcoatRoughnessTexture",
+    "extensions/KHR_materials_clearcoat/clearcoatNormalTexture",
+    "extensions/KHR_materials_sheen/sheenColorTexture",
+    "extensions/KHR_materials_sheen/sheenRoughnessTexture",
+    "extensions/KHR_materials_anisotropy/anisotropyTexture",
+    "extensions/KHR_materials_iridescence/iridescenceTexture",
+    "extensions/KHR_materials_iridescence/iridescenceThicknessTexture",
+    "extensions/KHR_materials_specular/specularTexture",
+    "extensions/KHR_materials_specular/specularColorTexture",
+    "extensions/KHR_materials_transmission/transmissionTexture",
+    "extensions/KHR_materials_volume/thicknessTexture",
+    "extensions/KHR_materials_diffuse_transmission/diffuseTransmissionTexture",
+    "extensions/KHR_materials_diffuse_transmission/diffuseTransmissionColorTexture",
+};
+static_assert(std::size(kTexturePointers) == kMaterialTextures.size(), "a pointer path for every texture of scene::Material");
+
+/// A non-negative decimal index (JSON pointer tokens have no sign or leading zeros to honour here).
+std::optional<int> pointerIndex(std::string_view token)
+{
+    if (token.empty() || token.size() > 9) return std::nullopt;
+    int value = 0;
+    for (char c : token) {
+        if (c < '0' || c > '9') return std::nullopt;
+        value = value * 10 + (c - '0');
+    }
+    return value;
+}
+
+/// KHR_animation_pointer's target as a channel, or nothing where Specula does not animate it.
+/// Indices are checked by the caller.
+std::optional<AnimationChannel> pointerChannel(std::string_view pointer)
+{
+    std::vector<std::string_view> tokens;
+    if (!pointer.starts_with('/')) return std::nullopt;
+    for (size_t start = 1; start <= pointer.size();) {
+        const size_t end = std::min(pointer.find('/', start), pointer.size());
+        tokens.push_back(pointer.substr(start, end - start));
+        start = end + 1;
+    }
+    AnimationChannel out;
+    out.node = -1;
+    if (tokens.size() == 3 && tokens[0] == "nodes") {
+        const auto node = pointerIndex(tokens[1]);
+        if (!node) return std::nullopt;
+        out.node = *node;
+        if (tokens[2] == "translation") out.path = AnimationPath::Translation;
+        else if (tokens[2] == "rotation") out.path = AnimationPath::Rotation;
+        else if (tokens[2] == "scale") out.path = AnimationPath::Scale;
+        else if (tokens[2] == "weights") out.path = AnimationPath::Weights;
+        else return std::nullopt;
+        return out;
+    }
+    out.path = AnimationPath::Property;
+    if (tokens.size() >= 3 && tokens[0] == "materials") {
+        const auto material = pointerIndex(tokens[1]);
+        if (!material) return std::nullopt;
+        out.property.index = *material;
+        const std::string_view rest = pointer.substr(pointer.find('/', 1 + tokens[0].size() + 1) + 1);
+        for (const MaterialPointer& p : kMaterialPointers)
+            if (rest == p.path) {
+                out.property.field = p.field;
+                return out;
+            }
+        constexpr std::string_view kTransform = "/extensions/KHR_texture_transform/";
+        for (size_t t = 0; t < std::size(kTexturePointers); ++t) {
+            if (!rest.starts_with(kTexturePointers[t]) || rest.substr(kTexturePointers[t].size()).find(kTransform) != 0) continue;
+            const std::string_view name = rest.substr(kTexturePointers[t].size() + kTransform.size());
+            out.property.texture = int(t);
+            if (name == "offset") out.property.field = AnimatedField::TextureOffset;
+            else if (name == "rotation") out.property.field = AnimatedField::TextureRotation;
+            else if (name == "scale") out.property.field = AnimatedField::TextureScale;
+            else return std::nullopt;
+            return out;
+        }
+        return std::nullopt;
+    }
+    if (tokens.size() == 4 && tokens[0] == "cameras") {
+        const auto camera = pointerIndex(tokens[1]);
+        if (!camera) return std::nullopt;
+        out.property.index = *camera;
+        const std::string_view type = tokens[2], name = tokens[3];
+        if (type == "perspective" && name == "yfov") out.property.field = AnimatedField::CameraYfov;
+        else if ((type == "perspective" || type == "orthographic") && name == "znear") out.property.field = AnimatedField::CameraZnear;
+        else if ((type == "perspective" || type == "orthographic") && name == "zfar") out.property.field = AnimatedField::CameraZfar;
+        else if (type == "orthographic" && name == "xmag") out.property.field = AnimatedField::CameraXmag;
+        else if (type == "orthographic" && name == "ymag") out.property.field = AnimatedField::CameraYmag;
+        else return std::nullopt; // aspectRatio: the viewport's is used
+        return out;
+    }
+    if ((tokens.size() == 5 || tokens.size() == 6) && tokens[0] == "extensions" && tokens[1] == "KHR_lights_punctual" &&
+        tokens[2] == "lights") {
+        const auto light = pointerIndex(tokens[3]);
+        if (!light) return std::nullopt;
+        out.property.index = *light;
+        if (tokens.size() == 5 && tokens[4] == "color") out.property.field = AnimatedField::LightColor;
+        else if (tokens.size() == 5 && tokens[4] == "intensity") out.property.field = AnimatedField::LightIntensity;
+        else if (tokens.size() == 5 && tokens[4] == "range") out.property.field = AnimatedField::LightRange;
+        else if (tokens.size() == 6 && tokens[4] == "spot" && tokens[5] == "innerConeAngle")
+            out.property.field = AnimatedField::SpotInnerConeAngle;
+        else if (tokens.size() == 6 && tokens[4] == "spot" && tokens[5] == "outerConeAngle")
+            out.property.field = AnimatedField::SpotOuterConeAngle;
+        else return std::nullopt;
+        return out;
+    }
+    return std::nullopt;
 }
 
 } // namespace
@@ -201,23 +349,58 @@ void Importer::convertAnimations()
         for (size_t c = 0; c < source.channels.size(); ++c) {
             const tinygltf::AnimationChannel& channel = source.channels[c];
             const auto where = fmt::format("animation {} channel {}", a, c);
-            if (channel.target_node < 0) {
-                warn("{} has no target node (an extension's target?); it is ignored", where);
-                continue;
-            }
-            at(mModel.nodes, channel.target_node, "node", where);
             AnimationChannel out;
-            out.node = channel.target_node;
-            if (channel.target_path == "translation") out.path = AnimationPath::Translation;
-            else if (channel.target_path == "rotation") out.path = AnimationPath::Rotation;
-            else if (channel.target_path == "scale") out.path = AnimationPath::Scale;
-            else if (channel.target_path == "weights") out.path = AnimationPath::Weights;
-            else {
-                warn("{} animates '{}', which is not supported; it is ignored", where, channel.target_path);
-                continue;
+            if (channel.target_path == "pointer") {
+                // KHR_animation_pointer: the target is a JSON pointer into the document.
+                const auto extension = channel.target_extensions.find("KHR_animation_pointer");
+                const tinygltf::Value* pointer =
+                    extension == channel.target_extensions.end() ? nullptr : member(extension->second, "pointer");
+                if (!pointer || !pointer->IsString()) fail("{} has the path 'pointer' but no KHR_animation_pointer pointer", where);
+                const std::optional<AnimationChannel> target = pointerChannel(pointer->Get<std::string>());
+                if (!target) {
+                    warn("{} animates '{}', which is not supported; it is ignored", where, pointer->Get<std::string>());
+                    continue;
+                }
+                out = *target;
+                if (out.path == AnimationPath::Property) {
+                    const bool light = isLightField(out.property.field), camera = isCameraField(out.property.field);
+                    const size_t count = light ? mScene.lights.size() : camera ? mScene.cameras.size() : mScene.materials.size();
+                    if (out.property.index >= int(count))
+                        fail("{} animates '{}', but there are {} {}", where, pointer->Get<std::string>(), count,
+                             light ? "lights" : camera ? "cameras" : "materials");
+                }
+            } else {
+                if (channel.target_node < 0) {
+                    warn("{} has no target node (an extension's target?); it is ignored", where);
+                    continue;
+                }
+                out.node = channel.target_node;
+                if (channel.target_path == "translation") out.path = AnimationPath::Translation;
+                else if (channel.target_path == "rotation") out.path = AnimationPath::Rotation;
+                else if (channel.target_path == "scale") out.path = AnimationPath::Scale;
+                else if (channel.target_path == "weights") out.path = AnimationPath::Weights;
+                else {
+                    warn("{} animates '{}', which is not supported; it is ignored", where, channel.target_path);
+                    continue;
+                }
             }
             at(source.samplers, channel.sampler, "sampler", where);
             out.sampler = channel.sampler;
+            if (out.path == AnimationPath::Property) {
+                AnimationSampler& sampler = animation.samplers[size_t(out.sampler)];
+                const int components = animatedFieldComponents(out.property.field);
+                if (sampler.components != 0 && sampler.components != components)
+                    fail("{} uses sampler {} for {} values per key, but another channel uses it for {}", where, out.sampler,
+                         components, sampler.components);
+                const size_t perKey = size_t(components) * (sampler.interpolation == Interpolation::CubicSpline ? 3 : 1);
+                if (sampler.values.size() != sampler.times.size() * perKey)
+                    fail("{}: sampler {} has {} output numbers for {} keyframes of {} values ({} expected)", where, out.sampler,
+                         sampler.values.size(), sampler.times.size(), components, sampler.times.size() * perKey);
+                sampler.components = components;
+                animation.channels.push_back(out);
+                continue;
+            }
+            at(mModel.nodes, out.node, "node", where);
             const Node& node = mScene.nodes[size_t(out.node)];
             if (out.path != AnimationPath::Weights && node.matrix) {
                 // glTF 2.0 spec (Animations): a node with a matrix is not a valid TRS target.

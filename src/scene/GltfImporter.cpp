@@ -24,6 +24,7 @@ constexpr std::string_view kSupportedExtensions[] = {
     "EXT_mesh_gpu_instancing", // each instance a child node of its node (GltfImporter.cpp, meshInstances)
     "EXT_meshopt_compression",    // bufferViews decoded with meshoptimizer (GltfCompression.cpp)
     "EXT_texture_webp",           // WebP images decoded with libwebp (GltfMaterials.cpp)
+    "KHR_animation_pointer",      // materials' factors, texture transforms, lights (GltfAnimation.cpp)
     "KHR_draco_mesh_compression", // primitives decoded with Draco (GltfCompression.cpp)
     "KHR_lights_punctual",
     "KHR_materials_anisotropy", // the anisotropic specular lobe (Material::anisotropy*)
@@ -662,6 +663,21 @@ std::optional<PreparedFile> prepareForTinygltf(const std::vector<unsigned char>&
             if (!uri.starts_with(kWebpUri)) continue;
             uri.replace(0, kWebpUri.size(), "data:application/octet-stream;base64,");
             changed = true;
+        }
+    }
+    // KHR_animation_pointer's channels have no target node, which Debian's tinygltf requires:
+    // -1 stands in for it (the importer reads the pointer from the target's extension).
+    const auto animations = document.find("animations");
+    if (animations != document.end() && animations->is_array()) {
+        for (auto& animation : *animations) {
+            if (!animation.is_object() || !animation.contains("channels") || !animation["channels"].is_array()) continue;
+            for (auto& channel : animation["channels"]) {
+                if (!channel.is_object() || !channel.contains("target") || !channel["target"].is_object()) continue;
+                auto& target = channel["target"];
+                if (target.contains("node")) continue;
+                target["node"] = -1;
+                changed = true;
+            }
         }
     }
     if (!changed) return std::nullopt;

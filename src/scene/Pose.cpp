@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtx/quaternion.hpp>
 
@@ -30,10 +31,22 @@ void applyAnimation(const Scene& scene, int animation, float t, Pose& pose)
     const Animation& a = scene.animations[size_t(animation)];
     std::vector<float> value;
     for (const AnimationChannel& channel : a.channels) {
-        if (channel.sampler < 0 || size_t(channel.sampler) >= a.samplers.size() || channel.node < 0 ||
-            size_t(channel.node) >= pose.nodes.size())
-            continue; // the importer refuses these; a hand-made Scene may still hold them
+        if (channel.sampler < 0 || size_t(channel.sampler) >= a.samplers.size()) continue;
         const AnimationSampler& sampler = a.samplers[size_t(channel.sampler)];
+        if (channel.path == AnimationPath::Property) {
+            const int n = animatedFieldComponents(channel.property.field);
+            if (sampler.components != n) continue; // the importer refuses these
+            PropertyValue v{channel.property, glm::vec4(0.0f)};
+            evaluateSampler(sampler, t, false, &v.value.x);
+            // Two channels on one property: the later one wins, as for a node's.
+            const auto same = std::find_if(pose.properties.begin(), pose.properties.end(),
+                                           [&](const PropertyValue& p) { return p.property == channel.property; });
+            if (same != pose.properties.end()) *same = v;
+            else pose.properties.push_back(v);
+            continue;
+        }
+        if (channel.node < 0 || size_t(channel.node) >= pose.nodes.size())
+            continue; // the importer refuses these; a hand-made Scene may still hold them
         value.assign(size_t(std::max(sampler.components, 0)), 0.0f);
         evaluateSampler(sampler, t, channel.path == AnimationPath::Rotation, value.data());
         NodeTransform& node = pose.nodes[size_t(channel.node)];
@@ -48,6 +61,7 @@ void applyAnimation(const Scene& scene, int animation, float t, Pose& pose)
             if (value.size() == 4) node.rotation = glm::quat(value[3], value[0], value[1], value[2]);
             break;
         case AnimationPath::Weights: pose.weights[size_t(channel.node)] = value; break;
+        case AnimationPath::Property: break; // above
         }
     }
 }
@@ -57,6 +71,94 @@ Pose poseAt(const Scene& scene, int animation, float t)
     Pose pose = restPose(scene);
     applyAnimation(scene, animation, t, pose);
     return pose;
+}
+
+void applyProperties(const Pose& pose, std::vector<Material>& materials, std::vector<Light>& lights)
+{
+    const auto unit = [](float x) { return std::clamp(x, 0.0f, 1.0f); };
+    const auto positive = [](float x) { return std::max(x, 0.0f); };
+    for (const PropertyValue& p : pose.properties) {
+        const glm::vec4 v = p.value;
+        const AnimatedField field = p.property.field;
+        if (isCameraField(field)) continue; // posedCamera
+        if (isLightField(field)) {
+            if (p.property.index < 0 || size_t(p.property.index) >= lights.size()) continue;
+            Light& light = lights[size_t(p.property.index)];
+            switch (field) {
+            case AnimatedField::LightColor: light.color = glm::max(glm::vec3(v), glm::vec3(0.0f)); break;
+            case AnimatedField::LightIntensity: light.intensity = positive(v.x); break;
+            case AnimatedField::LightRange: light.range = positive(v.x); break;
+            case AnimatedField::SpotInnerConeAngle: light.innerConeAngle = std::clamp(v.x, 0.0f, glm::half_pi<float>()); break;
+            case AnimatedField::SpotOuterConeAngle: light.outerConeAngle = std::clamp(v.x, 0.0f, glm::half_pi<float>()); break;
+            default: break;
+            }
+            continue;
+        }
+        if (p.property.index < 0 || size_t(p.property.index) >= materials.size()) continue;
+        Material& m = materials[size_t(p.property.index)];
+        if (field == AnimatedField::TextureOffset || field == AnimatedField::TextureRotation || field == AnimatedField::TextureScale) {
+            if (p.property.texture < 0 || size_t(p.property.texture) >= kMaterialTextures.size()) continue;
+            UvTransform& transform = (m.*kMaterialTextures[size_t(p.property.texture)]).transform;
+            if (field == AnimatedField::TextureOffset) transform.offset = glm::vec2(v);
+            else if (field == AnimatedField::TextureRotation) transform.rotation = v.x;
+            else transform.scale = glm::vec2(v);
+            continue;
+        }
+        switch (field) {
+        case AnimatedField::BaseColor: m.baseColorFactor = glm::clamp(v, 0.0f, 1.0f); break;
+        case AnimatedField::Metallic: m.metallicFactor = unit(v.x); break;
+        case AnimatedField::Roughness: m.roughnessFactor = unit(v.x); break;
+        case AnimatedField::Emissive: m.emissiveFactor = glm::clamp(glm::vec3(v), 0.0f, 1.0f); break;
+        case AnimatedField::EmissiveStrength: m.emissiveStrength = positive(v.x); break;
+        case AnimatedField::SpecularFactor: m.specularFactor = unit(v.x); break;
+        case AnimatedField::SpecularColor: m.specularColorFactor = glm::max(glm::vec3(v), glm::vec3(0.0f)); break;
+        case AnimatedField::Ior:
+            if (v.x >= 1.0f) m.ior = v.x; // below 1 (0: "no interface") has no F0 here, as at import
+            break;
+        case AnimatedField::ClearcoatFactor: m.clearcoatFactor = unit(v.x); break;
+        case AnimatedField::ClearcoatRoughness: m.clearcoatRoughnessFactor = unit(v.x); break;
+        case AnimatedField::SheenColor: m.sheenColorFactor = glm::clamp(glm::vec3(v), 0.0f, 1.0f); break;
+        case AnimatedField::SheenRoughness: m.sheenRoughnessFactor = unit(v.x); break;
+        case AnimatedField::AnisotropyStrength: m.anisotropyStrength = unit(v.x); break;
+        case AnimatedField::AnisotropyRotation: m.anisotropyRotation = v.x; break;
+        case AnimatedField::IridescenceFactor: m.iridescenceFactor = unit(v.x); break;
+        case AnimatedField::IridescenceIor: m.iridescenceIor = std::max(v.x, 1.0f); break;
+        case AnimatedField::IridescenceThicknessMinimum: m.iridescenceThicknessMinimum = positive(v.x); break;
+        case AnimatedField::IridescenceThicknessMaximum: m.iridescenceThicknessMaximum = positive(v.x); break;
+        case AnimatedField::DiffuseTransmission: m.diffuseTransmissionFactor = unit(v.x); break;
+        case AnimatedField::DiffuseTransmissionColor: m.diffuseTransmissionColorFactor = glm::clamp(glm::vec3(v), 0.0f, 1.0f); break;
+        case AnimatedField::Dispersion: m.dispersion = positive(v.x); break;
+        default: break;
+        }
+    }
+}
+
+Camera posedCamera(const Scene& scene, const Pose& pose, int index)
+{
+    Camera camera = scene.cameras.at(size_t(index));
+    for (const PropertyValue& p : pose.properties) {
+        if (!isCameraField(p.property.field) || p.property.index != index) continue;
+        const float v = p.value.x;
+        switch (p.property.field) {
+        case AnimatedField::CameraYfov: camera.yfov = std::clamp(v, 1e-4f, glm::pi<float>() - 1e-4f); break;
+        case AnimatedField::CameraZnear: camera.znear = std::max(v, 0.0f); break;
+        case AnimatedField::CameraZfar: camera.zfar = std::max(v, 0.0f); break;
+        case AnimatedField::CameraXmag: camera.xmag = v; break;
+        case AnimatedField::CameraYmag: camera.ymag = v; break;
+        default: break;
+        }
+    }
+    return camera;
+}
+
+std::vector<AnimatedProperty> animatedProperties(const Scene& scene)
+{
+    std::vector<AnimatedProperty> all;
+    for (const Animation& a : scene.animations)
+        for (const AnimationChannel& c : a.channels)
+            if (c.path == AnimationPath::Property && std::find(all.begin(), all.end(), c.property) == all.end())
+                all.push_back(c.property);
+    return all;
 }
 
 std::vector<glm::mat4> worldMatrices(const Scene& scene, const Pose& pose)

@@ -21,10 +21,18 @@ struct NodeTransform {
     glm::mat4 local() const;
 };
 
-/// Per node: its local transform and its morph weights (empty: its mesh's defaults).
+/// A KHR_animation_pointer property's value at the pose's time (animatedFieldComponents floats).
+struct PropertyValue {
+    AnimatedProperty property;
+    glm::vec4 value{0.0f};
+};
+
+/// Per node: its local transform and its morph weights (empty: its mesh's defaults); and the
+/// materials' and lights' properties the animation sets (KHR_animation_pointer).
 struct Pose {
     std::vector<NodeTransform> nodes;
     std::vector<std::vector<float>> weights;
+    std::vector<PropertyValue> properties;
 };
 
 /// The nodes as the file gives them.
@@ -34,6 +42,14 @@ Pose restPose(const Scene& scene);
 void applyAnimation(const Scene& scene, int animation, float t, Pose& pose);
 /// restPose, then applyAnimation.
 Pose poseAt(const Scene& scene, int animation, float t);
+
+/// Writes the pose's property values into `materials` and `lights` (copies of the scene's):
+/// factors clamped to their ranges as the importer clamps them, a base colour's alpha too.
+void applyProperties(const Pose& pose, std::vector<Material>& materials, std::vector<Light>& lights);
+/// Camera `camera` of the scene with the pose's property values (yfov, znear, zfar, xmag, ymag).
+Camera posedCamera(const Scene& scene, const Pose& pose, int camera);
+/// Every property any of the scene's animations sets, once each.
+std::vector<AnimatedProperty> animatedProperties(const Scene& scene);
 
 /// Each node's world matrix under `pose` (identity for nodes no root reaches).
 std::vector<glm::mat4> worldMatrices(const Scene& scene, const Pose& pose);

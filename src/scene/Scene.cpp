@@ -102,7 +102,13 @@ void Scene::append(Scene other, const glm::mat4& transform)
     }
     move(skins, other.skins);
     for (auto& animation : other.animations)
-        for (auto& channel : animation.channels) channel.node += nodeBase;
+        for (auto& channel : animation.channels) {
+            if (channel.path != AnimationPath::Property) channel.node += nodeBase;
+            // KHR_animation_pointer's material or light.
+            else channel.property.index += isLightField(channel.property.field)    ? lightBase
+                                           : isCameraField(channel.property.field) ? cameraBase
+                                                                                   : materialBase;
+        }
     move(animations, other.animations);
     // Billboards are in world space, not nodes: place them with the transform here. Their size
     // stays as given (a sprite has no orientation for a rotation or scale to act on).

@@ -14,6 +14,7 @@
 #include "shading/SunExtraction.h"
 #include "scene/BuiltinScenes.h"
 #include "scene/DemoScenes.h"
+#include "scene/Pose.h"
 
 namespace specula::setup {
 
@@ -342,10 +343,11 @@ std::filesystem::path cacheDirectory(const FrameOptions& options)
 }
 
 render::View prepareView(scene::SceneDocument& document, const FrameOptions& options,
-                         const render::FrameSettings& settings, int* added, bool hasEnvironment)
+                         const render::FrameSettings& settings, int* added, bool hasEnvironment, const AnimationChoice& animation)
 {
     const float aspect = float(settings.width) / float(settings.height);
-    const render::View view = render::defaultView(document.scene, options.camera, aspect);
+    const scene::Pose pose = scene::poseAt(document.scene, animation.index, animation.seconds);
+    const render::View view = render::defaultView(document.scene, options.camera, aspect, &pose);
     int count = 0;
     const bool allowed = !options.noDefaultLights && document.render.defaultLights.value_or(true);
     if (document.scene.lights.empty() && !hasEnvironment && allowed) {

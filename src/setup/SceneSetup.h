@@ -105,7 +105,9 @@ std::filesystem::path cacheDirectory(const FrameOptions& options);
 
 /// The view for the frame; adds the default light rig to `document` when it has no lights,
 /// no environment, and the user did not forbid it. Returns the number of default lights added via `added`.
+/// A scene camera is where `animation` puts it (its node, and KHR_animation_pointer's properties).
 render::View prepareView(scene::SceneDocument& document, const FrameOptions& options,
-                         const render::FrameSettings& settings, int* added = nullptr, bool hasEnvironment = false);
+                         const render::FrameSettings& settings, int* added = nullptr, bool hasEnvironment = false,
+                         const AnimationChoice& animation = {});
 
 } // namespace specula::setup

@@ -2,11 +2,14 @@
 // name and by index alike, none = the rest pose), and bad values are one line and a non-zero exit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "CliRunner.h"
+#include "core/ImageIO.h"
 
 namespace fs = std::filesystem;
 using specula::test::runCli;
@@ -86,4 +89,35 @@ TEST(CliAnimation, TimeOnAStillSceneIsAWarning)
     const auto none = runCli("render " + quads + " -o " + dir + "/out2.png" + kSmall + " --animation run");
     EXPECT_NE(none.exitCode, 0);
     EXPECT_NE(none.err.find("no animation 'run' (the scene has none)"), std::string::npos) << none.err;
+}
+
+// An animated camera (tests/assets/gltf/animation_pointer.gltf: its node moved by a core channel
+// from x = 0 to 0.5, its yfov through KHR_animation_pointer from 0.6 to 0.9) renders from where
+// the keyframes put it: the quads' outer columns (x = -2.1 and 2.1 in the world, 6 m away) land
+// where the pinhole projection with that position and field of view says, within 2 pixels.
+// Broken on purpose (2026-12-07): the camera at its rest pose (prepareView without the pose) put
+// the outer columns at 34 and 125 at 1 s, 10 and 23 pixels from the predicted 44 and 102.
+TEST(CliAnimation, AnimatedCameraFramesTheShot)
+{
+    const std::string dir = tempDir("animation-camera");
+    const std::string file = std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/animation_pointer.gltf";
+    constexpr int kWidth = 160, kHeight = 80;
+    for (const double t : {0.0, 1.0}) {
+        const std::string out = dir + "/camera-" + std::to_string(int(t)) + ".png";
+        const auto r = runCli("render " + file + " -o " + out + " --camera 0 --animation 0 --time " + std::to_string(t) +
+                              " --width 160 --height 80 --env none --no-cache");
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const specula::ImageRGBA8 image = specula::readPng(out);
+        ASSERT_EQ(image.width, kWidth);
+        int first = kWidth, last = -1;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x) {
+                const uint8_t* p = &image.pixels[(size_t(y) * kWidth + size_t(x)) * 4];
+                if (std::max({p[0], p[1], p[2]}) > 8) first = std::min(first, x), last = std::max(last, x);
+            }
+        const double cameraX = 0.5 * t, halfWidth = 6.0 * std::tan((0.6 + 0.3 * t) / 2.0) * 2.0; // aspect 2
+        const auto column = [&](double worldX) { return ((worldX - cameraX) / halfWidth + 1.0) / 2.0 * kWidth; };
+        EXPECT_NEAR(first + 0.5, column(-2.1), 2.0) << "t " << t;
+        EXPECT_NEAR(last + 0.5, column(2.1), 2.0) << "t " << t;
+    }
 }

@@ -23,6 +23,7 @@
 #include "scene/Animation.h"
 #include "scene/GltfImporter.h"
 #include "scene/Pose.h"
+#include "render/View.h"
 
 using namespace specula;
 using namespace specula::scene;
@@ -329,4 +330,132 @@ TEST(GltfAnimation, BadFilesAreOneLineErrors)
               std::string::npos);
     EXPECT_NE(errorOf([] { loadEditedBar([](nlohmann::json& d) { d["skins"][0]["inverseBindMatrices"] = 0; }); }).find("MAT4"),
               std::string::npos);
+}
+
+namespace {
+
+Scene loadEditedPointers(const std::function<void(nlohmann::json&)>& edit)
+{
+    nlohmann::json doc = nlohmann::json::parse(readText(kAssets + "animation_pointer.gltf"));
+    edit(doc);
+    const std::string text = doc.dump();
+    return loadGltfFromMemory(std::vector<unsigned char>(text.begin(), text.end()), kAssets + "edited.gltf");
+}
+
+} // namespace
+
+// tests/assets/gltf/animation_pointer.gltf (make_animation_pointer.py): KHR_animation_pointer's
+// channels become node paths and material, texture-transform and light properties; the one
+// Specula does not animate (alphaCutoff) is a warning naming its pointer.
+TEST(GltfAnimation, AnimationPointerTargets)
+{
+    const Scene s = loadGltf(kAssets + "animation_pointer.gltf");
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("'/materials/0/alphaCutoff', which is not supported"), std::string::npos) << s.warnings[0];
+    ASSERT_EQ(s.animations.size(), 1u);
+    const std::vector<AnimationChannel>& c = s.animations[0].channels;
+    ASSERT_EQ(c.size(), 7u);
+    EXPECT_EQ(c[0].path, AnimationPath::Property);
+    EXPECT_EQ(c[0].property, (AnimatedProperty{AnimatedField::BaseColor, 0, -1}));
+    EXPECT_EQ(c[1].property, (AnimatedProperty{AnimatedField::TextureOffset, 0, 0})); // the base colour texture
+    EXPECT_EQ(c[2].path, AnimationPath::Translation);
+    EXPECT_EQ(c[2].node, 1);
+    EXPECT_EQ(c[3].property, (AnimatedProperty{AnimatedField::LightIntensity, 0, -1}));
+    EXPECT_EQ(c[4].property, (AnimatedProperty{AnimatedField::LightColor, 0, -1}));
+    EXPECT_EQ(c[5].path, AnimationPath::Translation); // the camera's node, a core channel
+    EXPECT_EQ(c[6].property, (AnimatedProperty{AnimatedField::CameraYfov, 0, -1}));
+    EXPECT_EQ(animatedProperties(s).size(), 5u);
+
+    // The values at 0.25 s and 0.75 s, written into copies of the materials and lights.
+    for (const float t : {0.25f, 0.75f}) {
+        const Pose pose = poseAt(s, 0, t);
+        std::vector<Material> materials = s.materials;
+        std::vector<Light> lights = s.lights;
+        applyProperties(pose, materials, lights);
+        const glm::vec4 colour = glm::mix(glm::vec4(1, 0, 0, 1), glm::vec4(0, 0, 1, 1), t);
+        for (int k = 0; k < 4; ++k) EXPECT_NEAR(materials[0].baseColorFactor[k], colour[k], 1e-6f) << "t " << t;
+        EXPECT_EQ(materials[0].baseColorTexture.transform.offset, glm::vec2(t < 0.5f ? 0.0f : 0.5f, 0.0f));
+        EXPECT_EQ(materials[1].baseColorFactor, s.materials[1].baseColorFactor); // not animated
+        EXPECT_NEAR(lights[0].intensity, 2.0f + 4.0f * t, 1e-5f);
+        EXPECT_EQ(lights[0].color, t < 0.5f ? glm::vec3(1.0f) : glm::vec3(1.0f, 0.5f, 0.25f));
+        EXPECT_NEAR(pose.nodes[1].translation.y, 0.5f * t, 1e-6f);
+    }
+    // The rest pose sets nothing: the file's values stay.
+    const Pose rest = poseAt(s, -1, 0.0f);
+    EXPECT_TRUE(rest.properties.empty());
+}
+
+TEST(GltfAnimation, AnimationPointerErrors)
+{
+    using test::errorOf;
+    const auto pointer = [](int channel) {
+        return nlohmann::json::json_pointer("/animations/0/channels/" + std::to_string(channel) +
+                                            "/target/extensions/KHR_animation_pointer/pointer");
+    };
+    // An index past the document's materials or lights.
+    EXPECT_NE(errorOf([&] {
+                  loadEditedPointers([&](nlohmann::json& d) { d[pointer(0)] = "/materials/7/pbrMetallicRoughness/baseColorFactor"; });
+              }).find("but there are 2 materials"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] {
+                  loadEditedPointers([&](nlohmann::json& d) { d[pointer(3)] = "/extensions/KHR_lights_punctual/lights/3/intensity"; });
+              }).find("but there are 1 lights"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { loadEditedPointers([&](nlohmann::json& d) { d[pointer(2)] = "/nodes/9/translation"; }); })
+                  .find("refers to node 9"),
+              std::string::npos);
+    // The path "pointer" without the extension's pointer.
+    EXPECT_NE(errorOf([&] {
+                  loadEditedPointers([](nlohmann::json& d) { d["animations"][0]["channels"][0]["target"].erase("extensions"); });
+              }).find("no KHR_animation_pointer pointer"),
+              std::string::npos);
+    // Keyframes of the wrong size for the property (a VEC4 colour sampler on a scalar).
+    EXPECT_NE(errorOf([&] {
+                  loadEditedPointers([&](nlohmann::json& d) { d[pointer(0)] = "/materials/0/pbrMetallicRoughness/roughnessFactor"; });
+              }).find("output numbers for 2 keyframes of 1 values"),
+              std::string::npos);
+    // A pointer Specula does not know is a warning, not an error.
+    const Scene s = loadEditedPointers([&](nlohmann::json& d) { d[pointer(0)] = "/cameras/0/perspective/aspectRatio"; });
+    EXPECT_EQ(s.warnings.size(), 2u);
+}
+
+// An animated camera (its node moved by a core channel, its yfov through a pointer) seen
+// through render::cameraView with the pose: where the keyframes put it, against matrices built
+// here from the file's numbers; without a pose, the rest camera.
+TEST(GltfAnimation, AnimatedCameraFollowsItsNodeAndPointer)
+{
+    const Scene s = loadGltf(kAssets + "animation_pointer.gltf");
+    const float aspect = 2.0f;
+    for (const float t : {0.0f, 0.5f, 1.0f}) {
+        const Pose pose = poseAt(s, 0, t);
+        const render::View v = render::cameraView(s, 0, aspect, &pose);
+        const glm::vec3 eye(0.5f * t, 0.0f, 6.0f);
+        EXPECT_NEAR(glm::distance(v.position, eye), 0.0f, 1e-6f) << "t " << t;
+        const glm::mat4 view = glm::inverse(glm::translate(glm::mat4(1.0f), eye));
+        const glm::mat4 projection = glm::perspective(0.6f + 0.3f * t, aspect, 0.1f, 50.0f);
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) {
+                EXPECT_NEAR(v.view[c][r], view[c][r], 1e-5f) << "t " << t;
+                EXPECT_NEAR(v.projection[c][r], projection[c][r], 1e-5f) << "t " << t;
+            }
+    }
+    const render::View rest = render::cameraView(s, 0, aspect);
+    EXPECT_EQ(rest.position, glm::vec3(0.0f, 0.0f, 6.0f));
+    EXPECT_NEAR(rest.projection[1][1], 1.0f / std::tan(0.3f), 1e-5f);
+}
+
+// Scene::append (scene files with several models) shifts a pointer's material and light as it
+// shifts the primitives' and nodes'.
+TEST(GltfAnimation, AppendShiftsAnimatedMaterialsAndLights)
+{
+    Scene s = loadGltf(kAssets + "animation_pointer.gltf");
+    s.append(loadGltf(kAssets + "animation_pointer.gltf"));
+    ASSERT_EQ(s.animations.size(), 2u);
+    const std::vector<AnimationChannel>& c = s.animations[1].channels;
+    EXPECT_EQ(c[0].property.index, 2); // material 0 of the second copy
+    ASSERT_GT(c[2].node, 2); // the nodes shift as before: the second copy's card
+    EXPECT_EQ(s.nodes[size_t(c[2].node)].name, "card");
+    EXPECT_EQ(c[3].property.index, 1); // light 0 of the second copy
+    EXPECT_EQ(c[4].property.index, 1);
+    EXPECT_EQ(c[6].property.index, 1); // camera 0 of the second copy
 }
