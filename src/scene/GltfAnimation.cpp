@@ -386,34 +386,23 @@ void Importer::convertAnimations()
             }
             at(source.samplers, channel.sampler, "sampler", where);
             out.sampler = channel.sampler;
-            if (out.path == AnimationPath::Property) {
-                AnimationSampler& sampler = animation.samplers[size_t(out.sampler)];
-                const int components = animatedFieldComponents(out.property.field);
-                if (sampler.components != 0 && sampler.components != components)
-                    fail("{} uses sampler {} for {} values per key, but another channel uses it for {}", where, out.sampler,
-                         components, sampler.components);
-                const size_t perKey = size_t(components) * (sampler.interpolation == Interpolation::CubicSpline ? 3 : 1);
-                if (sampler.values.size() != sampler.times.size() * perKey)
-                    fail("{}: sampler {} has {} output numbers for {} keyframes of {} values ({} expected)", where, out.sampler,
-                         sampler.values.size(), sampler.times.size(), components, sampler.times.size() * perKey);
-                sampler.components = components;
-                animation.channels.push_back(out);
-                continue;
-            }
-            at(mModel.nodes, out.node, "node", where);
-            const Node& node = mScene.nodes[size_t(out.node)];
-            if (out.path != AnimationPath::Weights && node.matrix) {
-                // glTF 2.0 spec (Animations): a node with a matrix is not a valid TRS target.
-                warn("{} animates the {} of node {}, which has a matrix; it is ignored", where, pathName(out.path), out.node);
-                continue;
-            }
-            int components = out.path == AnimationPath::Rotation ? 4 : 3;
-            if (out.path == AnimationPath::Weights) {
-                const size_t targets = node.mesh >= 0 && !mScene.meshes[size_t(node.mesh)].primitives.empty()
-                                           ? mScene.meshes[size_t(node.mesh)].primitives[0].targets.size()
-                                           : 0;
-                if (targets == 0) fail("{} animates the weights of node {}, whose mesh has no morph targets", where, out.node);
-                components = int(targets);
+            int components = animatedFieldComponents(out.property.field);
+            if (out.path != AnimationPath::Property) {
+                at(mModel.nodes, out.node, "node", where);
+                const Node& node = mScene.nodes[size_t(out.node)];
+                if (out.path != AnimationPath::Weights && node.matrix) {
+                    // glTF 2.0 spec (Animations): a node with a matrix is not a valid TRS target.
+                    warn("{} animates the {} of node {}, which has a matrix; it is ignored", where, pathName(out.path), out.node);
+                    continue;
+                }
+                components = out.path == AnimationPath::Rotation ? 4 : 3;
+                if (out.path == AnimationPath::Weights) {
+                    const size_t targets = node.mesh >= 0 && !mScene.meshes[size_t(node.mesh)].primitives.empty()
+                                               ? mScene.meshes[size_t(node.mesh)].primitives[0].targets.size()
+                                               : 0;
+                    if (targets == 0) fail("{} animates the weights of node {}, whose mesh has no morph targets", where, out.node);
+                    components = int(targets);
+                }
             }
             AnimationSampler& sampler = animation.samplers[size_t(out.sampler)];
             if (sampler.components != 0 && sampler.components != components)
@@ -422,8 +411,8 @@ void Importer::convertAnimations()
             const size_t perKey = size_t(components) * (sampler.interpolation == Interpolation::CubicSpline ? 3 : 1);
             if (sampler.values.size() != sampler.times.size() * perKey)
                 fail("{}: sampler {} has {} output numbers for {} keyframes of {} {} ({} expected)", where, out.sampler,
-                     sampler.values.size(), sampler.times.size(), components, pathName(out.path),
-                     sampler.times.size() * perKey);
+                     sampler.values.size(), sampler.times.size(), components,
+                     out.path == AnimationPath::Property ? "values" : pathName(out.path), sampler.times.size() * perKey);
             sampler.components = components;
             animation.channels.push_back(out);
         }

@@ -72,12 +72,18 @@ std::string readText(const std::string& path)
 }
 
 /// The bar asset with `edit` applied to its JSON, loaded from memory.
-Scene loadEditedBar(const std::function<void(nlohmann::json&)>& edit)
+/// Test asset `name` with `edit` applied to its JSON, loaded from memory.
+Scene loadEdited(const std::string& name, const std::function<void(nlohmann::json&)>& edit)
 {
-    nlohmann::json doc = nlohmann::json::parse(readText(kAssets + "skinned_bar.gltf"));
+    nlohmann::json doc = nlohmann::json::parse(readText(kAssets + name));
     edit(doc);
     const std::string text = doc.dump();
     return loadGltfFromMemory(std::vector<unsigned char>(text.begin(), text.end()), kAssets + "edited.gltf");
+}
+
+Scene loadEditedBar(const std::function<void(nlohmann::json&)>& edit)
+{
+    return loadEdited("skinned_bar.gltf", edit);
 }
 
 } // namespace
@@ -336,10 +342,7 @@ namespace {
 
 Scene loadEditedPointers(const std::function<void(nlohmann::json&)>& edit)
 {
-    nlohmann::json doc = nlohmann::json::parse(readText(kAssets + "animation_pointer.gltf"));
-    edit(doc);
-    const std::string text = doc.dump();
-    return loadGltfFromMemory(std::vector<unsigned char>(text.begin(), text.end()), kAssets + "edited.gltf");
+    return loadEdited("animation_pointer.gltf", edit);
 }
 
 } // namespace
