@@ -13,6 +13,7 @@
 #include "render/FrameContext.h"
 #include "render/GpuScene.h"
 #include "render/graph/GlGraphBackend.h"
+#include "scene/Pose.h"
 #include "render/passes/TonemapPass.h"
 #include "render/pipelines/FramePipelines.h"
 #include "shading/VariantKey.h"
@@ -126,6 +127,9 @@ struct Renderer::Impl {
     /// replaces them): setPose moves them with their nodes.
     std::vector<int> lightNodes;
     std::vector<int> lightIndices; ///< per buffer slot: the scene's light (with lightNodes)
+    /// Per scene light: the fields KHR_animation_pointer animates (bits of scene::AnimatedField
+    /// from LightColor on). setPose writes those only: a viewer's edit of the others stays.
+    std::vector<uint32_t> animatedLightFields;
 
     /// The last frame: its exported textures stay readable until the next one.
     std::unique_ptr<Frame> last;
@@ -226,6 +230,10 @@ void Renderer::setScene(const scene::Scene& scene)
         mImpl->lightNodes.push_back(instance.node);
         mImpl->lightIndices.push_back(instance.light);
     }
+    mImpl->animatedLightFields.assign(scene.lights.size(), 0u);
+    for (const scene::AnimatedProperty& p : scene::animatedProperties(scene))
+        if (scene::isLightField(p.field) && size_t(p.index) < scene.lights.size())
+            mImpl->animatedLightFields[size_t(p.index)] |= 1u << (int(p.field) - int(scene::AnimatedField::LightColor));
 }
 
 void Renderer::setVariant(int variant)
@@ -252,12 +260,14 @@ void Renderer::setPose(int animation, float seconds)
         const PlacedLight before = placed;
         placed.position = glm::vec3(world[node][3]);
         placed.direction = glm::normalize(glm::vec3(world[node] * glm::vec4(0, 0, -1, 0)));
-        if (const size_t light = size_t(mImpl->lightIndices[i]); light < posed.size()) {
-            placed.light.color = posed[light].color;
-            placed.light.intensity = posed[light].intensity;
-            placed.light.range = posed[light].range;
-            placed.light.innerConeAngle = posed[light].innerConeAngle;
-            placed.light.outerConeAngle = posed[light].outerConeAngle;
+        if (const size_t light = size_t(mImpl->lightIndices[i]); light < posed.size() && light < mImpl->animatedLightFields.size()) {
+            const uint32_t animated = mImpl->animatedLightFields[light];
+            const auto has = [&](scene::AnimatedField f) { return (animated >> (int(f) - int(scene::AnimatedField::LightColor))) & 1u; };
+            if (has(scene::AnimatedField::LightColor)) placed.light.color = posed[light].color;
+            if (has(scene::AnimatedField::LightIntensity)) placed.light.intensity = posed[light].intensity;
+            if (has(scene::AnimatedField::LightRange)) placed.light.range = posed[light].range;
+            if (has(scene::AnimatedField::SpotInnerConeAngle)) placed.light.innerConeAngle = posed[light].innerConeAngle;
+            if (has(scene::AnimatedField::SpotOuterConeAngle)) placed.light.outerConeAngle = posed[light].outerConeAngle;
         }
         const scene::Light& a = before.light;
         const scene::Light& b = placed.light;

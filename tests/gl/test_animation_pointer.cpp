@@ -115,4 +115,20 @@ TEST_F(GlTest, AnimationPointerDrivesMaterialsTexturesNodesAndLights)
         std::printf("animation pointer at %s: %d screen and %d card pixels compared, %d channels off\n",
                     t < 0.0 ? "rest" : std::to_string(t).c_str(), screen, card, failures);
     }
+
+    // An edit (the viewer's) of a field no animation sets stays through the next pose, a
+    // material's and a light's; the animated fields follow the keyframes. Broken on purpose
+    // (2026-12-07): the posed material's whole record written lost the edited roughness; every
+    // light field copied from the posed lights lost the edited range.
+    renderer.setMaterialParameter(0, render::MaterialParameter::Roughness, glm::vec4(0.3f));
+    renderer.setPose(0, 0.3f);
+    EXPECT_FLOAT_EQ(renderer.materialParameter(0, render::MaterialParameter::Roughness).x, 0.3f);
+    EXPECT_NEAR(renderer.materialParameter(0, render::MaterialParameter::BaseColor).x, 0.7f, 1e-6f);
+    render::PlacedLight edited = renderer.light(0);
+    edited.light.range = 7.0f;
+    edited.light.intensity = 100.0f;
+    renderer.setLight(0, edited);
+    renderer.setPose(0, 0.3f);
+    EXPECT_EQ(renderer.light(0).light.range, 7.0f);
+    EXPECT_NEAR(renderer.light(0).light.intensity, 2.0f + 4.0f * 0.3f, 1e-5f);
 }
