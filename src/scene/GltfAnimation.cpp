@@ -397,8 +397,12 @@ void Importer::convertAnimations()
                 }
                 components = out.path == AnimationPath::Rotation ? 4 : 3;
                 if (out.path == AnimationPath::Weights) {
-                    const size_t targets = node.mesh >= 0 && !mScene.meshes[size_t(node.mesh)].primitives.empty()
-                                               ? mScene.meshes[size_t(node.mesh)].primitives[0].targets.size()
+                    // An instanced node's mesh is its instances' (EXT_mesh_gpu_instancing; Node::weightsFrom).
+                    int mesh = node.mesh;
+                    for (size_t k = 0; mesh < 0 && k < node.children.size(); ++k)
+                        if (mScene.nodes[size_t(node.children[k])].weightsFrom == out.node) mesh = mScene.nodes[size_t(node.children[k])].mesh;
+                    const size_t targets = mesh >= 0 && !mScene.meshes[size_t(mesh)].primitives.empty()
+                                               ? mScene.meshes[size_t(mesh)].primitives[0].targets.size()
                                                : 0;
                     if (targets == 0) fail("{} animates the weights of node {}, whose mesh has no morph targets", where, out.node);
                     components = int(targets);

@@ -327,6 +327,7 @@ void Importer::convertNodes()
         node.skin = -1;
         node.weights.clear();
         for (Node& child : instances.children) {
+            child.weightsFrom = instances.node; // an animation of the node's weights reaches its instances
             mScene.nodes[size_t(instances.node)].children.push_back(int(mScene.nodes.size()));
             mScene.nodes.push_back(std::move(child));
         }

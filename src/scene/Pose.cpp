@@ -199,7 +199,8 @@ std::vector<float> morphWeights(const Scene& scene, const Pose& pose, int node, 
     std::vector<float> out;
     if (node >= 0 && size_t(node) < scene.nodes.size()) {
         const Node& n = scene.nodes[size_t(node)];
-        if (size_t(node) < pose.weights.size() && !pose.weights[size_t(node)].empty()) out = pose.weights[size_t(node)];
+        const size_t animated = size_t(n.weightsFrom >= 0 ? n.weightsFrom : node); // an instance: its node's animation
+        if (animated < pose.weights.size() && !pose.weights[animated].empty()) out = pose.weights[animated];
         else if (!n.weights.empty()) out = n.weights;
         else if (n.mesh >= 0 && size_t(n.mesh) < scene.meshes.size()) out = scene.meshes[size_t(n.mesh)].weights;
     }

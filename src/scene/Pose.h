@@ -57,8 +57,9 @@ std::vector<glm::mat4> worldMatrices(const Scene& scene, const Pose& pose);
 /// goes to world space by the weighted sum of its joints' matrices (the mesh node's own
 /// transform is not applied).
 std::vector<glm::mat4> jointMatrices(const Skin& skin, const std::vector<glm::mat4>& world);
-/// The morph weights node `node`'s mesh is drawn with: the pose's, else the node's, else the
-/// mesh's, padded with zeros (or cut) to `targets` entries.
+/// The morph weights node `node`'s mesh is drawn with: the pose's (for an EXT_mesh_gpu_instancing
+/// instance, its instanced node's: Node::weightsFrom), else the node's, else the mesh's, padded
+/// with zeros (or cut) to `targets` entries.
 std::vector<float> morphWeights(const Scene& scene, const Pose& pose, int node, size_t targets);
 
 /// `rest`'s vertices morphed by `weights` (one per target; missing ones 0) and then, when

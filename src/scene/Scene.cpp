@@ -83,6 +83,7 @@ void Scene::append(Scene other, const glm::mat4& transform)
         if (node.camera >= 0) node.camera += cameraBase;
         if (node.light >= 0) node.light += lightBase;
         if (node.skin >= 0) node.skin += skinBase;
+        if (node.weightsFrom >= 0) node.weightsFrom += nodeBase;
         for (int& child : node.children) child += nodeBase;
     }
     auto move = [](auto& to, auto& from) {

@@ -293,6 +293,9 @@ struct Node {
     int skin = -1; ///< index into Scene::skins: its mesh is skinned by it
     /// Morph target weights of its mesh (glTF node.weights); empty = the mesh's.
     std::vector<float> weights;
+    /// EXT_mesh_gpu_instancing: an instance's morph weights follow this node's animation (the
+    /// instanced node's, which an animation's weights channel targets); -1 = its own.
+    int weightsFrom = -1;
     std::vector<int> children;
     /// Its mesh casts shadows, and receives them (the scene file's castShadows and
     /// receiveShadows of a model or shape, set on each of its nodes).

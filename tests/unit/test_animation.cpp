@@ -303,6 +303,27 @@ TEST(GltfAnimation, ImportsTheMorphQuad)
     EXPECT_EQ(s.animations[0].channels[0].path, AnimationPath::Weights);
 }
 
+// EXT_mesh_gpu_instancing on the morphed quad (tests/assets/gltf/morph_quad.gltf, an instance at
+// each of its four corners): the animation's weights channel targets the instanced node, and
+// every instance is drawn with the weights it sets ((0, 0) to (1, 0.5) over 1 s), not the mesh's
+// (0.25, 0). Before, the file was refused (the instanced node had no mesh of its own for the
+// weights channel). Broken on purpose (2026-12-07): without Node::weightsFrom in morphWeights the
+// instances kept (0.25, 0).
+TEST(GltfAnimation, InstancesFollowTheirNodesMorphWeights)
+{
+    const Scene s = loadEdited("morph_quad.gltf", [](nlohmann::json& d) {
+        d["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"] = {{"attributes", {{"TRANSLATION", 0}}}};
+        d["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+    });
+    ASSERT_EQ(s.nodes.size(), 5u); // the quad's node and its four instances
+    const Pose pose = poseAt(s, 0, 1.0f);
+    for (int instance = 1; instance <= 4; ++instance) {
+        EXPECT_EQ(s.nodes[size_t(instance)].weightsFrom, 0);
+        EXPECT_EQ(morphWeights(s, pose, instance, 2), (std::vector<float>{1.0f, 0.5f})) << "instance " << instance;
+        EXPECT_EQ(morphWeights(s, poseAt(s, -1, 0.0f), instance, 2), (std::vector<float>{0.25f, 0.0f})); // at rest: the mesh's
+    }
+}
+
 TEST(GltfAnimation, BadFilesAreOneLineErrors)
 {
     using test::errorOf;
