@@ -233,9 +233,11 @@ void Viewer::renderFrame(float deltaSeconds)
     const float aspect = float(size.x) / float(size.y);
     render::View view;
     if (mSceneCamera >= 0) {
-        // A scene camera follows the animation (its node, and KHR_animation_pointer's properties).
-        const scene::Pose pose = scene::poseAt(mDocument.scene, mPosed ? mPosed->first : -1, mPosed ? mPosed->second : 0.0f);
-        view = render::cameraView(mDocument.scene, mSceneCamera, aspect, &pose);
+        // A scene camera follows the animation (its node, and KHR_animation_pointer's properties);
+        // without one playing, the rest pose needs no pose built each frame.
+        std::optional<scene::Pose> pose;
+        if (mPosed && mPosed->first >= 0) pose = scene::poseAt(mDocument.scene, mPosed->first, mPosed->second);
+        view = render::cameraView(mDocument.scene, mSceneCamera, aspect, pose ? &*pose : nullptr);
     } else {
         view = mCamera.view(aspect);
     }
