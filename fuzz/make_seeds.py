@@ -120,21 +120,26 @@ textured["materials"][0]["extensions"] = {
 textured["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": 0, "SCALE": 1}}}
 textured["nodes"][1]["extensions"]["KHR_node_visibility"] = {"visible": False}
 write("seeds/gltf/textured_instanced.gltf", json.dumps(textured))
-# KHR_animation_pointer: channels on a texture transform's offset, the emissive factor and the
-# light's intensity, keyframes read from the positions (times 0, 1 from its third float on).
+# KHR_animation_pointer: channels on a texture transform's offset, the emissive factor, the
+# light's intensity, the alpha cutoff and a node's KHR_node_visibility (unsigned bytes, STEP),
+# keyframes read from the positions (times 0, 1 from its third float on).
 pointers = triangle_gltf("buffer.bin", {"uri": "texture.png"})
 pointers["extensionsUsed"].append("KHR_animation_pointer")
 pointers["accessors"] += [{"bufferView": 0, "byteOffset": 8, "componentType": 5126, "count": 2, "type": "SCALAR"},
                           {"bufferView": 0, "componentType": 5126, "count": 2, "type": "VEC2"},
-                          {"bufferView": 0, "componentType": 5126, "count": 2, "type": "VEC3"}]
+                          {"bufferView": 0, "componentType": 5126, "count": 2, "type": "VEC3"},
+                          {"bufferView": 0, "componentType": 5121, "count": 2, "type": "SCALAR"}]
 def pointer_channel(sampler, path):
     return {"sampler": sampler, "target": {"path": "pointer", "extensions": {"KHR_animation_pointer": {"pointer": path}}}}
 pointers["animations"] = [{"samplers": [{"input": 4, "output": 5, "interpolation": "STEP"},
                                         {"input": 4, "output": 6, "interpolation": "LINEAR"},
-                                        {"input": 4, "output": 4, "interpolation": "LINEAR"}],
+                                        {"input": 4, "output": 4, "interpolation": "LINEAR"},
+                                        {"input": 4, "output": 7, "interpolation": "STEP"}],
                            "channels": [pointer_channel(0, "/materials/0/pbrMetallicRoughness/baseColorTexture/extensions/KHR_texture_transform/offset"),
                                         pointer_channel(1, "/materials/0/emissiveFactor"),
-                                        pointer_channel(2, "/extensions/KHR_lights_punctual/lights/0/intensity")]}]
+                                        pointer_channel(2, "/extensions/KHR_lights_punctual/lights/0/intensity"),
+                                        pointer_channel(2, "/materials/0/alphaCutoff"),
+                                        pointer_channel(3, "/nodes/0/extensions/KHR_node_visibility/visible")]}]
 write("seeds/gltf/animation_pointer.gltf", json.dumps(pointers))
 # The archived KHR_materials_pbrSpecularGlossiness, converted on import.
 specgloss = triangle_gltf("buffer.bin", {"uri": "texture.png"})

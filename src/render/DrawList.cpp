@@ -54,6 +54,7 @@ DrawList DrawList::build(const GpuScene& scene, const glm::mat4& view, const glm
     list.mFilter = filter;
     const Frustum frustum(viewProjection);
     for (const DrawItem& item : scene.draws()) {
+        if (!item.visible) continue;
         const GpuPrimitive& p = scene.primitives()[size_t(item.primitive)];
         const MaterialBinding& material = scene.materials()[size_t(p.material)];
         const bool blended = material.alphaMode == scene::AlphaMode::Blend;

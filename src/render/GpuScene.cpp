@@ -132,11 +132,12 @@ void packTransform(shared::GpuMaterial& gpu, int slot, const scene::TextureRef& 
 }
 
 /// A material's factors in its record (everything a material's numbers set; not the flags,
-/// the alpha cutoff, the texture transforms or the classic models' ks): at load, and again for
-/// an animated material's animated fields (GpuScene::setAnimatedFields).
+/// the texture transforms or the classic models' ks): at load, and again for an animated
+/// material's animated fields (GpuScene::setAnimatedFields).
 void packFactors(const scene::Material& m, shared::GpuMaterial& gpu)
 {
     gpu.baseColorFactor = m.baseColorFactor;
+    gpu.alpha.x = m.alphaCutoff;
     gpu.emissive = glm::vec4(m.emissiveFactor * m.emissiveStrength, float(m.sectorLight) / 255.0f);
     gpu.params = glm::vec4(m.metallicFactor, m.roughnessFactor, m.normalScale, m.occlusionStrength);
     gpu.specular = glm::vec4(m.specularColorFactor, m.specularFactor);
@@ -303,7 +304,6 @@ GpuScene::GpuScene(const scene::Scene& scene)
     for (const scene::Material& m : materials) {
         shared::GpuMaterial gpu{};
         packFactors(m, gpu);
-        gpu.alpha = glm::vec4(m.alphaCutoff, 0.0f, 0.0f, 0.0f);
         // Classic models' specular colour: mid grey, a plastic highlight (Phong 1975's ks).
         gpu.phong = glm::vec4(glm::vec3(0.5f), m.shininess);
         for (int slot = 0; slot < int(TextureSlot::Count); ++slot) gpu.uvTransform[2 * slot] = {1, 0, 0, 0}, gpu.uvTransform[2 * slot + 1] = {0, 1, 0, 0};
@@ -468,7 +468,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         mRig->animations = scene.animations;
         // KHR_animation_pointer: what posing writes into materials and lights starts from these.
         for (const scene::AnimatedProperty& p : scene::animatedProperties(scene)) {
-            if (scene::isLightField(p.field)) continue;
+            if (!scene::isMaterialField(p.field)) continue;
             if (p.index < 0 || size_t(p.index) >= scene.materials.size()) continue; // the importer refuses these
             auto same = std::find_if(mAnimatedMaterials.begin(), mAnimatedMaterials.end(),
                                      [&](const AnimatedMaterial& a) { return a.material == p.index; });
@@ -478,7 +478,9 @@ GpuScene::GpuScene(const scene::Scene& scene)
         if (!mAnimatedMaterials.empty()) mRig->materials = scene.materials;
         mRig->lights = scene.lights;
     }
-    for (const scene::MeshInstance& instance : scene.meshInstances()) {
+    // Hidden nodes' meshes (KHR_node_visibility) are kept where an animation may show them.
+    const scene::HiddenNodes hidden = mRig ? scene::HiddenNodes::Include : scene::HiddenNodes::Skip;
+    for (const scene::MeshInstance& instance : scene.meshInstances(hidden)) {
         const auto& sourcePrimitives = scene.meshes[size_t(instance.mesh)].primitives;
         for (size_t k = 0, drawn = 0; k < sourcePrimitives.size(); ++k) {
             const scene::Primitive& source = sourcePrimitives[k];
@@ -506,8 +508,9 @@ GpuScene::GpuScene(const scene::Scene& scene)
             item.mirrored = glm::determinant(glm::mat3(instance.world)) < 0.0f;
             item.castShadows = instance.castShadows;
             item.receiveShadows = instance.receiveShadows;
+            item.visible = instance.visible;
             mDraws.push_back(item);
-            mTriangles += mPrimitives[size_t(primitive)].count / 3;
+            if (item.visible) mTriangles += mPrimitives[size_t(primitive)].count / 3;
         }
     }
     updateBounds();
@@ -522,6 +525,7 @@ void GpuScene::updateBounds()
     mBounds = {};
     mCasterBounds = {};
     for (const DrawItem& item : mDraws) {
+        if (!item.visible) continue;
         const GpuPrimitive& p = mPrimitives[size_t(item.primitive)];
         const scene::Bounds world = p.bounds.transformed(item.world);
         mBounds.extend(world);
@@ -555,8 +559,10 @@ size_t GpuScene::setPose(int animation, float seconds)
     scene::applyProperties(pose, materials, mPosedLights);
     for (const AnimatedMaterial& a : mAnimatedMaterials) setAnimatedFields(a.material, materials[size_t(a.material)], a.fields);
     const std::vector<glm::mat4> world = scene::worldMatrices(rig, pose);
+    mNodeVisible = scene::nodeVisibility(rig, pose);
     for (size_t d = 0; d < mDraws.size(); ++d) {
         DrawItem& item = mDraws[d];
+        item.visible = mNodeVisible[size_t(mDrawNode[d])];
         item.world = world[size_t(mDrawNode[d])];
         item.normalMatrix = glm::transpose(glm::inverse(glm::mat3(item.world)));
         item.mirrored = glm::determinant(glm::mat3(item.world)) < 0.0f;
@@ -680,6 +686,14 @@ std::array<RecordRange, 2> recordRanges(const scene::AnimatedProperty& p)
     case F::DiffuseTransmission: return {at(offsetof(GpuMaterial, diffuseTransmission), 3, 1)};
     case F::DiffuseTransmissionColor: return {at(offsetof(GpuMaterial, diffuseTransmission), 0, 3)};
     case F::Dispersion: return {at(offsetof(GpuMaterial, attenuation), 3, 1)};
+    case F::AlphaCutoff: return {at(offsetof(GpuMaterial, alpha), 0, 1)};
+    case F::NormalScale: return {at(offsetof(GpuMaterial, params), 2, 1)};
+    case F::OcclusionStrength: return {at(offsetof(GpuMaterial, params), 3, 1)};
+    case F::ClearcoatNormalScale: return {at(offsetof(GpuMaterial, clearcoat), 2, 1)};
+    case F::Transmission: return {at(offsetof(GpuMaterial, transmission), 0, 1)};
+    case F::Thickness: return {at(offsetof(GpuMaterial, transmission), 2, 1)};
+    case F::AttenuationDistance: return {at(offsetof(GpuMaterial, transmission), 3, 1)};
+    case F::AttenuationColor: return {at(offsetof(GpuMaterial, attenuation), 0, 3)};
     case F::TextureOffset:
     case F::TextureRotation:
     case F::TextureScale: // both rows of the texture's transform
@@ -717,7 +731,15 @@ void GpuScene::setAnimatedFields(int material, const scene::Material& m, const s
             break;
         case F::AnisotropyStrength: setFeature(material, SPECULA_MATERIAL_ANISOTROPY, m.anisotropyStrength > 0.0f); break;
         case F::IridescenceFactor: setFeature(material, SPECULA_MATERIAL_IRIDESCENCE, m.iridescenceFactor > 0.0f); break;
-        case F::Dispersion: setFeature(material, SPECULA_MATERIAL_DISPERSION, m.dispersion > 0.0f && m.thickness > 0.0f); break;
+        case F::Dispersion:
+        case F::Thickness: setFeature(material, SPECULA_MATERIAL_DISPERSION, m.dispersion > 0.0f && m.thickness > 0.0f); break;
+        case F::Transmission:
+            // The draw moves between the opaque and the transmissive lists, and the shadow rule
+            // (castsShadow) reads the factor.
+            setFeature(material, SPECULA_MATERIAL_TRANSMISSION, m.transmissionFactor > 0.0f);
+            for (size_t record = 0; record < mMaterials.size(); ++record)
+                if (mRecordMaterial[record] == material) mMaterials[record].transmission = m.transmissionFactor;
+            break;
         case F::DiffuseTransmission:
             setFeature(material, SPECULA_MATERIAL_DIFFUSE_TRANSMISSION, m.diffuseTransmissionFactor > 0.0f);
             break;

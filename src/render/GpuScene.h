@@ -93,6 +93,7 @@ struct DrawItem {
     bool mirrored = false; ///< negative determinant: front faces wind clockwise
     bool castShadows = true;
     bool receiveShadows = true;
+    bool visible = true; ///< KHR_node_visibility: false, not drawn (an animation may show it)
 };
 
 class GpuScene {
@@ -155,6 +156,8 @@ public:
 
     /// Every node's world matrix at the last setPose (empty before one, and for a static scene).
     const std::vector<glm::mat4>& nodeWorlds() const { return mNodeWorlds; }
+    /// Every node's KHR_node_visibility at the last setPose (scene::nodeVisibility; empty before one).
+    const std::vector<bool>& nodeVisible() const { return mNodeVisible; }
     /// The scene's lights at the last setPose, KHR_animation_pointer's properties applied (empty
     /// before one, and for a static scene).
     const std::vector<scene::Light>& posedLights() const { return mPosedLights; }
@@ -182,6 +185,7 @@ private:
     std::vector<DeformedDraw> mDeformed;
     std::vector<scene::Vertex> mScratch;
     std::vector<glm::mat4> mNodeWorlds;
+    std::vector<bool> mNodeVisible;
     /// The materials KHR_animation_pointer animates, and what of each.
     struct AnimatedMaterial {
         int material = 0;

@@ -58,7 +58,7 @@ shared::GpuLight LightBuffer::pack(const PlacedLight& placed, int shadowSlot, fl
     gpu.positionRange = glm::vec4(placed.position, directional ? 0.0f : effectiveRange(std::max(l.range, 0.0f), cutoff));
     const glm::vec3 direction = glm::length(placed.direction) > 0.0f ? glm::normalize(placed.direction) : glm::vec3(0, 0, -1);
     gpu.directionType = glm::vec4(direction, float(uint32_t(l.type)));
-    gpu.colorIntensity = glm::vec4(l.color, std::max(l.intensity, 0.0f));
+    gpu.colorIntensity = glm::vec4(l.color, placed.visible ? std::max(l.intensity, 0.0f) : 0.0f);
     // KHR_lights_punctual: 1e-3 keeps inner == outer from dividing by zero (a hard edge).
     const float cosOuter = std::cos(l.outerConeAngle);
     const float scale = 1.0f / std::max(std::cos(l.innerConeAngle) - cosOuter, 1e-3f);
@@ -137,11 +137,11 @@ void LightBuffer::bind(gl::State& state)
     gl::bindStorageBuffer(SPECULA_BINDING_LIGHTS, mBuffer);
 }
 
-std::vector<PlacedLight> placeLights(const scene::Scene& scene)
+std::vector<PlacedLight> placeLights(const scene::Scene& scene, scene::HiddenNodes hidden)
 {
     std::vector<PlacedLight> out;
-    for (const auto& instance : scene.lightInstances())
-        out.push_back({scene.lights[size_t(instance.light)], instance.position, instance.direction});
+    for (const auto& instance : scene.lightInstances(hidden))
+        out.push_back({scene.lights[size_t(instance.light)], instance.position, instance.direction, instance.visible});
     return out;
 }
 

@@ -87,7 +87,8 @@ private:
     std::vector<int> mShadowSlots;
 };
 
-/// The scene's lights in world space.
-std::vector<PlacedLight> placeLights(const scene::Scene& scene);
+/// The scene's lights in world space; hidden ones (KHR_node_visibility) only with
+/// HiddenNodes::Include, as PlacedLight::visible false.
+std::vector<PlacedLight> placeLights(const scene::Scene& scene, scene::HiddenNodes hidden = scene::HiddenNodes::Skip);
 
 } // namespace specula::render

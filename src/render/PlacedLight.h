@@ -14,6 +14,9 @@ struct PlacedLight {
     scene::Light light;
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, 0.0f, -1.0f}; ///< where it points
+    /// KHR_node_visibility: a hidden light's node (an animation may show it) gives no light,
+    /// casts no shadow and has no gizmo; its other fields are kept.
+    bool visible = true;
 };
 
 /// What one light edit (Renderer::setLight) uploaded to the light buffer: to check that it

@@ -223,10 +223,12 @@ void Renderer::setScene(const scene::Scene& scene)
     mImpl->stores.scene = std::make_unique<GpuScene>(scene);
     ++mImpl->stores.casterVersion;
     mImpl->passes.billboards.setScene(scene);
-    mImpl->stores.lights.setAll(placeLights(scene));
+    // Hidden lights (KHR_node_visibility) are kept where an animation may show them.
+    const scene::HiddenNodes hidden = scene.animations.empty() ? scene::HiddenNodes::Skip : scene::HiddenNodes::Include;
+    mImpl->stores.lights.setAll(placeLights(scene, hidden));
     mImpl->lightNodes.clear();
     mImpl->lightIndices.clear();
-    for (const scene::LightInstance& instance : scene.lightInstances()) {
+    for (const scene::LightInstance& instance : scene.lightInstances(hidden)) {
         mImpl->lightNodes.push_back(instance.node);
         mImpl->lightIndices.push_back(instance.light);
     }
@@ -251,6 +253,7 @@ void Renderer::setPose(int animation, float seconds)
     // Lights on animated nodes move with them (as Scene::lightInstances places them), and take
     // the properties KHR_animation_pointer gives them.
     const std::vector<glm::mat4>& world = gpu->nodeWorlds();
+    const std::vector<bool>& visible = gpu->nodeVisible();
     const std::vector<scene::Light>& posed = gpu->posedLights();
     LightBuffer& lights = mImpl->stores.lights;
     for (size_t i = 0; i < mImpl->lightNodes.size() && int(i) < lights.count(); ++i) {
@@ -260,6 +263,7 @@ void Renderer::setPose(int animation, float seconds)
         const PlacedLight before = placed;
         placed.position = glm::vec3(world[node][3]);
         placed.direction = glm::normalize(glm::vec3(world[node] * glm::vec4(0, 0, -1, 0)));
+        if (node < visible.size()) placed.visible = visible[node];
         if (const size_t light = size_t(mImpl->lightIndices[i]); light < posed.size() && light < mImpl->animatedLightFields.size()) {
             const uint32_t animated = mImpl->animatedLightFields[light];
             const auto has = [&](scene::AnimatedField f) { return (animated >> (int(f) - int(scene::AnimatedField::LightColor))) & 1u; };
@@ -271,7 +275,7 @@ void Renderer::setPose(int animation, float seconds)
         }
         const scene::Light& a = before.light;
         const scene::Light& b = placed.light;
-        if (before.position == placed.position && before.direction == placed.direction && a.color == b.color &&
+        if (before.position == placed.position && before.direction == placed.direction && before.visible == placed.visible && a.color == b.color &&
             a.intensity == b.intensity && a.range == b.range && a.innerConeAngle == b.innerConeAngle && a.outerConeAngle == b.outerConeAngle)
             continue;
         lights.set(int(i), placed);

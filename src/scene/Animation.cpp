@@ -13,11 +13,17 @@ int animatedFieldComponents(AnimatedField field)
     case AnimatedField::SpecularColor:
     case AnimatedField::SheenColor:
     case AnimatedField::DiffuseTransmissionColor:
+    case AnimatedField::AttenuationColor:
     case AnimatedField::LightColor: return 3;
     case AnimatedField::TextureOffset:
     case AnimatedField::TextureScale: return 2;
     default: return 1;
     }
+}
+
+bool isMaterialField(AnimatedField field)
+{
+    return field < AnimatedField::LightColor;
 }
 
 bool isLightField(AnimatedField field)
@@ -27,7 +33,12 @@ bool isLightField(AnimatedField field)
 
 bool isCameraField(AnimatedField field)
 {
-    return field >= AnimatedField::CameraYfov;
+    return field >= AnimatedField::CameraYfov && field <= AnimatedField::CameraYmag;
+}
+
+bool isNodeField(AnimatedField field)
+{
+    return field == AnimatedField::NodeVisible;
 }
 
 float Animation::duration() const

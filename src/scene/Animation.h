@@ -15,30 +15,35 @@ enum class Interpolation { Step, Linear, CubicSpline };
 enum class AnimationPath { Translation, Rotation, Scale, Weights, Property };
 
 /// What a KHR_animation_pointer channel animates besides a node's transform and weights: a
-/// material's factor, a texture's KHR_texture_transform, a KHR_lights_punctual light's property
-/// or a camera's (scene/Pose.h applyProperties and posedCamera write it into a copy of the
-/// material, light or camera).
+/// material's factor, a texture's KHR_texture_transform, a KHR_lights_punctual light's property,
+/// a camera's, or a node's KHR_node_visibility (scene/Pose.h applyProperties, posedCamera and
+/// nodeVisibility write it into a copy of the material, light or camera, or the pose's nodes).
 enum class AnimatedField : uint8_t {
     // Materials (Material's fields of the same names).
     BaseColor, Metallic, Roughness, Emissive, EmissiveStrength, SpecularFactor, SpecularColor, Ior,
     ClearcoatFactor, ClearcoatRoughness, SheenColor, SheenRoughness, AnisotropyStrength, AnisotropyRotation,
     IridescenceFactor, IridescenceIor, IridescenceThicknessMinimum, IridescenceThicknessMaximum,
-    DiffuseTransmission, DiffuseTransmissionColor, Dispersion,
+    DiffuseTransmission, DiffuseTransmissionColor, Dispersion, AlphaCutoff, NormalScale, OcclusionStrength,
+    ClearcoatNormalScale, Transmission, Thickness, AttenuationDistance, AttenuationColor,
     // A material's texture (AnimatedProperty::texture) KHR_texture_transform.
     TextureOffset, TextureRotation, TextureScale,
     // Lights.
     LightColor, LightIntensity, LightRange, SpotInnerConeAngle, SpotOuterConeAngle,
     // Cameras (scene/Pose.h posedCamera).
     CameraYfov, CameraZnear, CameraZfar, CameraXmag, CameraYmag,
+    // Nodes: KHR_node_visibility's `visible`, a bool (keyframes 0 or not; STEP).
+    NodeVisible,
 };
 /// The floats a field's keyframes hold (4: base colour; 3: colours; 2: texture offset, scale).
 int animatedFieldComponents(AnimatedField field);
+bool isMaterialField(AnimatedField field); ///< a material's factor or one of its textures' transform
 bool isLightField(AnimatedField field);
 bool isCameraField(AnimatedField field);
+bool isNodeField(AnimatedField field);
 
 struct AnimatedProperty {
     AnimatedField field = AnimatedField::BaseColor;
-    int index = 0;    ///< the material's, light's or camera's index in the scene
+    int index = 0;    ///< the material's, light's, camera's or node's index in the scene
     int texture = -1; ///< texture transforms: the texture's index in kMaterialTextures (Scene.h)
     bool operator==(const AnimatedProperty&) const = default;
 };

@@ -52,6 +52,14 @@ constexpr MaterialPointer kMaterialPointers[] = {
     {"extensions/KHR_materials_diffuse_transmission/diffuseTransmissionFactor", AnimatedField::DiffuseTransmission},
     {"extensions/KHR_materials_diffuse_transmission/diffuseTransmissionColorFactor", AnimatedField::DiffuseTransmissionColor},
     {"extensions/KHR_materials_dispersion/dispersion", AnimatedField::Dispersion},
+    {"alphaCutoff", AnimatedField::AlphaCutoff},
+    {"normalTexture/scale", AnimatedField::NormalScale},
+    {"occlusionTexture/strength", AnimatedField::OcclusionStrength},
+    {"extensions/KHR_materials_clearcoat/clearcoatNormalTexture/scale", AnimatedField::ClearcoatNormalScale},
+    {"extensions/KHR_materials_transmission/transmissionFactor", AnimatedField::Transmission},
+    {"extensions/KHR_materials_volume/thicknessFactor", AnimatedField::Thickness},
+    {"extensions/KHR_materials_volume/attenuationDistance", AnimatedField::AttenuationDistance},
+    {"extensions/KHR_materials_volume/attenuationColor", AnimatedField::AttenuationColor},
 };
 // Each texture's textureInfo below /materials/{i}/, in the order of kMaterialTextures (Scene.h).
 constexpr std::string_view kTexturePointers[] = {
@@ -114,6 +122,14 @@ std::optional<AnimationChannel> pointerChannel(std::string_view pointer)
         return out;
     }
     out.path = AnimationPath::Property;
+    if (tokens.size() == 5 && tokens[0] == "nodes" && tokens[2] == "extensions" && tokens[3] == "KHR_node_visibility" &&
+        tokens[4] == "visible") {
+        const auto node = pointerIndex(tokens[1]);
+        if (!node) return std::nullopt;
+        out.property.index = *node;
+        out.property.field = AnimatedField::NodeVisible;
+        return out;
+    }
     if (tokens.size() >= 3 && tokens[0] == "materials") {
         const auto material = pointerIndex(tokens[1]);
         if (!material) return std::nullopt;
@@ -363,11 +379,26 @@ void Importer::convertAnimations()
                 }
                 out = *target;
                 if (out.path == AnimationPath::Property) {
-                    const bool light = isLightField(out.property.field), camera = isCameraField(out.property.field);
-                    const size_t count = light ? mScene.lights.size() : camera ? mScene.cameras.size() : mScene.materials.size();
+                    const AnimatedField field = out.property.field;
+                    const bool light = isLightField(field), camera = isCameraField(field), node = isNodeField(field);
+                    const size_t count = light    ? mScene.lights.size()
+                                         : camera ? mScene.cameras.size()
+                                         : node   ? mModel.nodes.size()
+                                                  : mScene.materials.size();
                     if (out.property.index >= int(count))
                         fail("{} animates '{}', but there are {} {}", where, pointer->Get<std::string>(), count,
-                             light ? "lights" : camera ? "cameras" : "materials");
+                             light ? "lights" : camera ? "cameras" : node ? "nodes" : "materials");
+                    if (field == AnimatedField::NodeVisible) {
+                        // A bool (the extension's Object Model types): unsigned bytes, STEP.
+                        const auto& sampler = at(source.samplers, channel.sampler, "sampler", where);
+                        const auto& output = at(mModel.accessors, sampler.output, "accessor", where + " output");
+                        if (output.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || output.normalized)
+                            fail("{} animates '{}', a bool: its output must be unsigned bytes (0 false, else true)", where,
+                                 pointer->Get<std::string>());
+                        if (sampler.interpolation != "STEP")
+                            fail("{} animates '{}', a bool: its sampler must use STEP interpolation, not {}", where,
+                                 pointer->Get<std::string>(), sampler.interpolation);
+                    }
                 }
             } else {
                 if (channel.target_node < 0) {

@@ -40,7 +40,7 @@ constexpr std::string_view kSupportedExtensions[] = {
     "KHR_materials_transmission", // factor and texture (Material::transmission*; docs/transparency.md)
     "KHR_materials_unlit",    // the unlit shading model (Material::shading)
     "KHR_materials_variants", // material variants (Scene::variants, Primitive::variants; --variant)
-    "KHR_node_visibility",    // hidden subtrees lose their meshes and lights (convertNodes)
+    "KHR_node_visibility",    // hidden subtrees' meshes and lights are not drawn (Node::visible)
     "KHR_materials_volume",       // thickness (factor and texture) and attenuation (Material::thickness, attenuation*)
     "KHR_mesh_quantization", // integer attributes: the accessor reader handles every component type
     "KHR_texture_transform",
@@ -359,20 +359,12 @@ void Importer::convertNodes()
         if (!reached[i]) fail("node {} is part of a cycle in the node hierarchy", i);
 
     // KHR_node_visibility: a node whose `visible` is false hides its meshes and lights and
-    // those of every node below it, whatever theirs say; cameras stay. (Nothing animates the
-    // property here: KHR_animation_pointer is not read.)
+    // those of every node below it, whatever theirs say; cameras stay (Scene::meshInstances).
+    // A KHR_animation_pointer channel may change it (scene/Pose.h nodeVisibility).
     for (size_t i = 0; i < mModel.nodes.size(); ++i) {
         const tinygltf::Value* visibility = extension(mModel.nodes[i].extensions, "KHR_node_visibility");
         const tinygltf::Value* visible = visibility ? member(*visibility, "visible") : nullptr;
-        if (!visible || !visible->IsBool() || visible->Get<bool>()) continue;
-        stack.assign(1, int(i));
-        while (!stack.empty()) {
-            Node& node = mScene.nodes[size_t(stack.back())];
-            stack.pop_back();
-            node.mesh = -1;
-            node.light = -1;
-            for (int child : node.children) stack.push_back(child);
-        }
+        if (visible && visible->IsBool()) mScene.nodes[i].visible = visible->Get<bool>();
     }
 }
 

@@ -80,7 +80,7 @@ void applyProperties(const Pose& pose, std::vector<Material>& materials, std::ve
     for (const PropertyValue& p : pose.properties) {
         const glm::vec4 v = p.value;
         const AnimatedField field = p.property.field;
-        if (isCameraField(field)) continue; // posedCamera
+        if (isCameraField(field) || isNodeField(field)) continue; // posedCamera, nodeVisibility
         if (isLightField(field)) {
             if (p.property.index < 0 || size_t(p.property.index) >= lights.size()) continue;
             Light& light = lights[size_t(p.property.index)];
@@ -128,6 +128,16 @@ void applyProperties(const Pose& pose, std::vector<Material>& materials, std::ve
         case AnimatedField::DiffuseTransmission: m.diffuseTransmissionFactor = unit(v.x); break;
         case AnimatedField::DiffuseTransmissionColor: m.diffuseTransmissionColorFactor = glm::clamp(glm::vec3(v), 0.0f, 1.0f); break;
         case AnimatedField::Dispersion: m.dispersion = positive(v.x); break;
+        case AnimatedField::AlphaCutoff: m.alphaCutoff = positive(v.x); break;
+        case AnimatedField::NormalScale: m.normalScale = v.x; break;
+        case AnimatedField::OcclusionStrength: m.occlusionStrength = unit(v.x); break;
+        case AnimatedField::ClearcoatNormalScale: m.clearcoatNormalScale = v.x; break;
+        case AnimatedField::Transmission: m.transmissionFactor = unit(v.x); break;
+        case AnimatedField::Thickness: m.thickness = positive(v.x); break;
+        case AnimatedField::AttenuationDistance:
+            m.attenuationDistance = std::isfinite(v.x) && v.x > 0.0f ? v.x : 0.0f; // 0: no attenuation, as at import
+            break;
+        case AnimatedField::AttenuationColor: m.attenuationColor = glm::clamp(glm::vec3(v), 0.0f, 1.0f); break;
         default: break;
         }
     }
@@ -181,6 +191,32 @@ std::vector<glm::mat4> worldMatrices(const Scene& scene, const Pose& pose)
         for (int child : scene.nodes[size_t(item.node)].children) stack.push_back({child, m});
     }
     return world;
+}
+
+std::vector<bool> nodeVisibility(const Scene& scene, const Pose& pose)
+{
+    std::vector<bool> own(scene.nodes.size());
+    for (size_t n = 0; n < scene.nodes.size(); ++n) own[n] = scene.nodes[n].visible;
+    for (const PropertyValue& p : pose.properties)
+        if (p.property.field == AnimatedField::NodeVisible && p.property.index >= 0 && size_t(p.property.index) < own.size())
+            own[size_t(p.property.index)] = p.value.x != 0.0f;
+    std::vector<bool> visible(scene.nodes.size(), true), done(scene.nodes.size(), false);
+    struct Item {
+        int node;
+        bool parent;
+    };
+    std::vector<Item> stack;
+    for (int root : scene.roots) stack.push_back({root, true});
+    while (!stack.empty()) {
+        const Item item = stack.back();
+        stack.pop_back();
+        if (item.node < 0 || size_t(item.node) >= scene.nodes.size() || done[size_t(item.node)]) continue;
+        done[size_t(item.node)] = true;
+        const bool v = item.parent && own[size_t(item.node)];
+        visible[size_t(item.node)] = v;
+        for (int child : scene.nodes[size_t(item.node)].children) stack.push_back({child, v});
+    }
+    return visible;
 }
 
 std::vector<glm::mat4> jointMatrices(const Skin& skin, const std::vector<glm::mat4>& world)

@@ -28,7 +28,7 @@ struct PropertyValue {
 };
 
 /// Per node: its local transform and its morph weights (empty: its mesh's defaults); and the
-/// materials' and lights' properties the animation sets (KHR_animation_pointer).
+/// materials', lights', cameras' and nodes' properties the animation sets (KHR_animation_pointer).
 struct Pose {
     std::vector<NodeTransform> nodes;
     std::vector<std::vector<float>> weights;
@@ -51,6 +51,9 @@ Camera posedCamera(const Scene& scene, const Pose& pose, int camera);
 /// Every property any of the scene's animations sets, once each.
 std::vector<AnimatedProperty> animatedProperties(const Scene& scene);
 
+/// KHR_node_visibility under `pose`: a node is visible when its own `visible` (the pose's where
+/// an animation sets it, else the file's) and every ancestor's are (true for nodes no root reaches).
+std::vector<bool> nodeVisibility(const Scene& scene, const Pose& pose);
 /// Each node's world matrix under `pose` (identity for nodes no root reaches).
 std::vector<glm::mat4> worldMatrices(const Scene& scene, const Pose& pose);
 /// glTF skins: joint matrix j = world(joints[j]) × inverseBindMatrices[j]. A skinned vertex

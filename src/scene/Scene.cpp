@@ -105,9 +105,10 @@ void Scene::append(Scene other, const glm::mat4& transform)
     for (auto& animation : other.animations)
         for (auto& channel : animation.channels) {
             if (channel.path != AnimationPath::Property) channel.node += nodeBase;
-            // KHR_animation_pointer's material or light.
+            // KHR_animation_pointer's material, light, camera or node.
             else channel.property.index += isLightField(channel.property.field)    ? lightBase
                                            : isCameraField(channel.property.field) ? cameraBase
+                                           : isNodeField(channel.property.field)   ? nodeBase
                                                                                    : materialBase;
         }
     move(animations, other.animations);
@@ -137,10 +138,11 @@ void walk(const Scene& scene, Visit&& visit)
     struct Item {
         int node;
         glm::mat4 parent;
+        bool visible; ///< the parent's (KHR_node_visibility)
     };
     std::vector<Item> stack;
     // Depth first, in file order: push in reverse so the first root is visited first.
-    for (auto it = scene.roots.rbegin(); it != scene.roots.rend(); ++it) stack.push_back({*it, glm::mat4(1.0f)});
+    for (auto it = scene.roots.rbegin(); it != scene.roots.rend(); ++it) stack.push_back({*it, glm::mat4(1.0f), true});
     // Guards against malformed files whose node graph is not a tree.
     size_t budget = scene.nodes.size() * 4 + 16;
     while (!stack.empty() && budget-- > 0) {
@@ -149,19 +151,20 @@ void walk(const Scene& scene, Visit&& visit)
         if (item.node < 0 || size_t(item.node) >= scene.nodes.size()) continue;
         const Node& node = scene.nodes[size_t(item.node)];
         const glm::mat4 world = item.parent * node.localMatrix();
-        visit(item.node, node, world);
-        for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world});
+        const bool visible = item.visible && node.visible;
+        visit(item.node, node, world, visible);
+        for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world, visible});
     }
 }
 
 } // namespace
 
-std::vector<MeshInstance> Scene::meshInstances() const
+std::vector<MeshInstance> Scene::meshInstances(HiddenNodes hidden) const
 {
     std::vector<MeshInstance> out;
-    walk(*this, [&](int index, const Node& node, const glm::mat4& world) {
-        if (node.mesh >= 0 && size_t(node.mesh) < meshes.size())
-            out.push_back({node.mesh, index, world, node.castShadows, node.receiveShadows});
+    walk(*this, [&](int index, const Node& node, const glm::mat4& world, bool visible) {
+        if (node.mesh >= 0 && size_t(node.mesh) < meshes.size() && (visible || hidden == HiddenNodes::Include))
+            out.push_back({node.mesh, index, world, node.castShadows, node.receiveShadows, visible});
     });
     return out;
 }
@@ -169,22 +172,23 @@ std::vector<MeshInstance> Scene::meshInstances() const
 std::vector<CameraInstance> Scene::cameraInstances() const
 {
     std::vector<CameraInstance> out;
-    walk(*this, [&](int index, const Node& node, const glm::mat4& world) {
+    walk(*this, [&](int index, const Node& node, const glm::mat4& world, bool) {
         if (node.camera >= 0 && size_t(node.camera) < cameras.size()) out.push_back({node.camera, index, world});
     });
     return out;
 }
 
-std::vector<LightInstance> Scene::lightInstances() const
+std::vector<LightInstance> Scene::lightInstances(HiddenNodes hidden) const
 {
     std::vector<LightInstance> out;
-    walk(*this, [&](int index, const Node& node, const glm::mat4& world) {
-        if (node.light >= 0 && size_t(node.light) < lights.size()) {
+    walk(*this, [&](int index, const Node& node, const glm::mat4& world, bool visible) {
+        if (node.light >= 0 && size_t(node.light) < lights.size() && (visible || hidden == HiddenNodes::Include)) {
             LightInstance instance;
             instance.light = node.light;
             instance.node = index;
             instance.position = glm::vec3(world[3]);
             instance.direction = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+            instance.visible = visible;
             out.push_back(instance);
         }
     });

@@ -301,8 +301,15 @@ struct Node {
     /// receiveShadows of a model or shape, set on each of its nodes).
     bool castShadows = true;
     bool receiveShadows = true;
+    /// KHR_node_visibility: false hides its mesh and light and every descendant's, whatever
+    /// theirs say (cameras stay); an animation may set it (scene/Pose.h nodeVisibility).
+    bool visible = true;
     glm::mat4 localMatrix() const;
 };
+
+/// Whether the instances of nodes that KHR_node_visibility hides are listed (with visible
+/// false): the renderer keeps them, for an animation that shows them.
+enum class HiddenNodes : uint8_t { Skip, Include };
 
 /// World-space results of walking the node tree.
 struct MeshInstance {
@@ -311,6 +318,7 @@ struct MeshInstance {
     glm::mat4 world{1.0f};
     bool castShadows = true;
     bool receiveShadows = true;
+    bool visible = true; ///< the node and its ancestors visible (KHR_node_visibility)
 };
 struct CameraInstance {
     int camera = -1;
@@ -322,6 +330,7 @@ struct LightInstance {
     int node = -1;
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, 0.0f, -1.0f}; ///< where the light points (local -Z)
+    bool visible = true; ///< the node and its ancestors visible (KHR_node_visibility)
 };
 
 /// How a billboard turns to face the camera (the basis formulas are in shading/Billboard.h).
@@ -395,9 +404,11 @@ struct Scene {
     /// Appends `other` (its indices shifted) under a new root node with `transform`.
     void append(Scene other, const glm::mat4& transform = glm::mat4(1.0f));
 
-    std::vector<MeshInstance> meshInstances() const;
+    /// The drawn meshes and the lights, in file order; hidden ones (KHR_node_visibility) only
+    /// with HiddenNodes::Include. Every camera is listed, hidden or not.
+    std::vector<MeshInstance> meshInstances(HiddenNodes hidden = HiddenNodes::Skip) const;
     std::vector<CameraInstance> cameraInstances() const;
-    std::vector<LightInstance> lightInstances() const;
+    std::vector<LightInstance> lightInstances(HiddenNodes hidden = HiddenNodes::Skip) const;
     Bounds worldBounds() const;
     size_t triangleCount() const;
 };

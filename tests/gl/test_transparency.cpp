@@ -357,6 +357,90 @@ TEST_F(GlTest, TransparencyTransmissionAndThicknessTexturesFromGltf)
     EXPECT_GT(textureMatters, 3.0); // the other half's texels would be far outside
 }
 
+// KHR_animation_pointer on the transmission and the volume of transmission_quad.gltf (the test
+// above): its factor LINEAR 0 -> 0.9, its thickness LINEAR 0.5 -> 0.25, the attenuation distance
+// STEP 0.25 -> 0.5 at 0.5 s, the attenuation colour LINEAR (0.9, 0.5, 0.2) -> (0.5, 0.9, 0.9), each
+// over 1 s: each pixel T (1 - F) c^(t/d) L with the posed values times the textures, and at 0 s
+// (factor 0) the quad is opaque: black, with no light, in front of the backdrop. The shadow rule
+// and the draw lists follow the factor (castsShadow: below 0.5 casts). The rest pose gives the
+// file's values back. Broken on purpose (2026-12-07), channels off at 0.25 s / 0.75 s: the factor
+// not written into the record 21,672 / 21,672 (every channel of the quad); the thickness not
+// written 21,672 / 21,672; the distance not written 0 / 21,672 (its step comes at 0.5 s); the
+// colour not written 21,672 / 21,672; the TRANSMISSION variant kept at factor 0 and the shadow
+// rule's factor not updated each fail the lists' checks (the pixels are the same: T = 0 is black).
+TEST_F(GlTest, TransparencyAnimatedTransmissionAndVolume)
+{
+    scene::Scene s = scene::loadGltf(std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/transmission_quad.gltf");
+    ASSERT_EQ(s.materials.size(), 1u);
+    scene::Animation animation;
+    const auto channel = [&](scene::AnimatedField field, scene::Interpolation interpolation, std::vector<float> times,
+                             std::vector<float> values, int components) {
+        animation.samplers.push_back({interpolation, std::move(times), std::move(values), components});
+        scene::AnimationChannel c;
+        c.sampler = int(animation.samplers.size() - 1);
+        c.node = -1;
+        c.path = scene::AnimationPath::Property;
+        c.property = {field, 0, -1};
+        animation.channels.push_back(c);
+    };
+    using scene::AnimatedField;
+    using scene::Interpolation;
+    channel(AnimatedField::Transmission, Interpolation::Linear, {0.0f, 1.0f}, {0.0f, 0.9f}, 1);
+    channel(AnimatedField::Thickness, Interpolation::Linear, {0.0f, 1.0f}, {0.5f, 0.25f}, 1);
+    channel(AnimatedField::AttenuationDistance, Interpolation::Step, {0.0f, 0.5f}, {0.25f, 0.5f}, 1);
+    channel(AnimatedField::AttenuationColor, Interpolation::Linear, {0.0f, 1.0f}, {0.9f, 0.5f, 0.2f, 0.5f, 0.9f, 0.9f}, 3);
+    s.animations.push_back(std::move(animation));
+    const dvec3 L(3.0);
+    addBackdrop(s, glm::vec3(L), false);
+    const render::View view = frontView();
+    render::Renderer renderer;
+    renderer.setScene(s);
+    render::GpuScene gpu(s); // the lists and the shadow rule, posed alongside
+    std::vector<render::DrawProgram> programs(size_t(gpu.materialCount()));
+    const glm::dvec3 eye(0.0, 0.0, 4.0);
+    for (const double t : {0.25, 0.75, -1.0, 0.0}) {
+        const bool rest = t < 0.0;
+        renderer.setPose(rest ? -1 : 0, float(std::max(t, 0.0)));
+        gpu.setPose(rest ? -1 : 0, float(std::max(t, 0.0)));
+        renderer.render(view, exactSettings());
+        const ImageFloat image = renderer.readRadiance();
+        const double u = std::max(t, 0.0);
+        const double factor = rest ? 0.9 : 0.9 * u, thick = rest ? 0.5 : 0.5 - 0.25 * u;
+        const double d = rest || t < 0.5 ? 0.25 : 0.5;
+        const dvec3 c = rest ? dvec3(0.9, 0.5, 0.2) : glm::mix(dvec3(0.9, 0.5, 0.2), dvec3(0.5, 0.9, 0.9), u);
+        const double transmission[2] = {factor * 128.0 / 255.0, factor}, thickness[2] = {thick, thick * 64.0 / 255.0};
+        int tested = 0, failures = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                const auto hit = hitQuad(pixelRay(view, x, y, kSize, kSize), glm::dmat4(facingZ(glm::mat4(1.0f))), 0.97);
+                if (!hit || std::abs(hit->x) < 0.03) continue; // the edges and the texel seam
+                const int texel = hit->x < 0.0 ? 0 : 1;
+                const double NoV = glm::normalize(eye - *hit).z;
+                const double F = 0.04 + 0.96 * std::pow(1.0 - NoV, 5.0);
+                const dvec3 want = transmission[texel] * (1.0 - F) * glm::pow(c, dvec3(thickness[texel] / d)) * L;
+                const dvec3 got = pixel(image, x, y);
+                ++tested;
+                for (int ch = 0; ch < 3; ++ch)
+                    if (std::abs(got[ch] - want[ch]) > kTransmissionRelative * want[ch] + kAbsolute && failures++ < 5)
+                        ADD_FAILURE() << "t " << t << " pixel (" << x << ", " << y << ") channel " << ch << ": " << got[ch]
+                                      << ", expected T (1 - F) c^(t/d) L = " << want[ch];
+            }
+        EXPECT_EQ(failures, 0) << "t " << t;
+        EXPECT_GT(tested, 1000);
+        std::printf("animated transmission at %s: %d pixels compared, %d channels off\n", rest ? "rest" : std::to_string(t).c_str(),
+                    tested, failures);
+        const render::DrawList casters = render::DrawList::build(gpu, view.view, view.projection * view.view,
+                                                                 render::DrawFilter::ShadowCasters, programs);
+        const render::DrawList transmissive = render::DrawList::build(gpu, view.view, view.projection * view.view,
+                                                                      render::DrawFilter::Transmissive, programs);
+        const auto quadIn = [&](const render::DrawList& list) {
+            return std::count_if(list.commands().begin(), list.commands().end(), [](const render::DrawCommand& c) { return c.material == 0; });
+        };
+        EXPECT_EQ(quadIn(casters), factor < render::kTransmissionShadowLimit ? 1 : 0) << "t " << t;
+        EXPECT_EQ(quadIn(transmissive), factor > 0.0 ? 1 : 0) << "t " << t;
+    }
+}
+
 // A smooth sphere of IOR 1 (no interface: F0 = 0) bends nothing: it is invisible but for its
 // reflection, which is Schlick's F = (1 − n·v)^5 at grazing angles. Each pixel is
 // (1 − F) × the checker's own pixel; where F < 1% (n·v > 0.6) it is the checker's pixel.

@@ -57,6 +57,7 @@ LightGizmos makeLightGizmos(const std::vector<PlacedLight>& lights, const scene:
     const float radius = sceneBounds.empty() ? 1.0f : std::max(sceneBounds.radius(), 1e-3f);
     for (size_t i = 0; i < lights.size(); ++i) {
         const PlacedLight& placed = lights[i];
+        if (!placed.visible) continue; // KHR_node_visibility
         const float scale = int(i) == selected ? kGizmoSelectedScale : 1.0f;
         const glm::vec3 color = placed.light.color;
         const float directionLength = glm::length(placed.direction);

@@ -271,7 +271,7 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
     for (int i = 0; i < lights.count(); ++i) {
         const PlacedLight& placed = lights.light(i);
         const scene::Light& l = placed.light;
-        if (!l.castShadows || l.intensity <= 0.0f || casterBounds.empty()) continue;
+        if (!l.castShadows || l.intensity <= 0.0f || !placed.visible || casterBounds.empty()) continue;
         float importance = 1.0f;
         if (l.type != scene::Light::Type::Directional)
             importance = screenImportance(placed.position, reach(l, sceneBounds, placed.position), frame.view.view,

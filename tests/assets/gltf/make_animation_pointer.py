@@ -11,7 +11,8 @@
 #     KHR_materials_specular's factor 0: no specular lobe).
 #   node 2, "lamp": a point light (KHR_lights_punctual) at (1.1, 0, 1.5), intensity 1.5 cd in the
 #     file, LINEAR from 2 cd at 0 s to 6 cd at 1 s; its colour white, STEP to (1, 0.5, 0.25) at 0.5 s.
-#   One channel points at /materials/0/alphaCutoff, which Specula does not animate (a warning).
+#   One channel points at /materials/0/extras/glow, an application's own property, which Specula
+#   does not animate (a warning).
 #   node 3, "camera": a perspective camera (yfov 0.6, znear 0.1, zfar 50) at (0, 0, 6), moved by
 #     a core translation channel LINEAR to (0.5, 0, 6) at 1 s; its yfov through the pointer
 #     /cameras/0/perspective/yfov LINEAR from 0.6 to 0.9.
@@ -36,7 +37,7 @@ offset = add(pack("f", [0, 0, 0.5, 0]), 2, "VEC2")
 move = add(pack("f", [1.1, 0, 0, 1.1, 0.5, 0]), 2, "VEC3")
 intensity = add(pack("f", [2.0, 6.0]), 2, "SCALAR")
 light_colour = add(pack("f", [1, 1, 1, 1, 0.5, 0.25]), 2, "VEC3")
-cutoff = add(pack("f", [0.25, 0.75]), 2, "SCALAR")
+glow = add(pack("f", [0.25, 0.75]), 2, "SCALAR")
 camera_move = add(pack("f", [0, 0, 6, 0.5, 0, 6]), 2, "VEC3")
 yfov = add(pack("f", [0.6, 0.9]), 2, "SCALAR")
 
@@ -58,7 +59,7 @@ doc = {
     "materials": [
         {"name": "screen", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1.0],
                                                     "baseColorTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"offset": [0, 0]}}}},
-         "extensions": {"KHR_materials_unlit": {}}},
+         "extensions": {"KHR_materials_unlit": {}}, "extras": {"glow": 0.0}},
         {"name": "card", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0},
          "extensions": {"KHR_materials_specular": {"specularFactor": 0.0}}}],
     "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 1.5, "name": "lamp"}]}},
@@ -71,7 +72,7 @@ doc = {
                                  {"input": t01, "output": move, "interpolation": "LINEAR"},
                                  {"input": t01, "output": intensity, "interpolation": "LINEAR"},
                                  {"input": t0h, "output": light_colour, "interpolation": "STEP"},
-                                 {"input": t01, "output": cutoff, "interpolation": "LINEAR"},
+                                 {"input": t01, "output": glow, "interpolation": "LINEAR"},
                                  {"input": t01, "output": camera_move, "interpolation": "LINEAR"},
                                  {"input": t01, "output": yfov, "interpolation": "LINEAR"}],
                     "channels": [pointer(0, "/materials/0/pbrMetallicRoughness/baseColorFactor"),
@@ -79,7 +80,7 @@ doc = {
                                  pointer(2, "/nodes/1/translation"),
                                  pointer(3, "/extensions/KHR_lights_punctual/lights/0/intensity"),
                                  pointer(4, "/extensions/KHR_lights_punctual/lights/0/color"),
-                                 pointer(5, "/materials/0/alphaCutoff"),
+                                 pointer(5, "/materials/0/extras/glow"),
                                  {"sampler": 6, "target": {"node": 3, "path": "translation"}},
                                  pointer(7, "/cameras/0/perspective/yfov")]}],
     "accessors": acc, "bufferViews": bv,
