@@ -141,6 +141,14 @@ pointers["animations"] = [{"samplers": [{"input": 4, "output": 5, "interpolation
                                         pointer_channel(2, "/materials/0/alphaCutoff"),
                                         pointer_channel(3, "/nodes/0/extensions/KHR_node_visibility/visible")]}]
 write("seeds/gltf/animation_pointer.gltf", json.dumps(pointers))
+# Points and lines: the triangle as a LINE_LOOP (indexed), a LINE_STRIP and POINTS (non-indexed,
+# no normals: drawn unlit).
+modes = triangle_gltf("buffer.bin", {"uri": "texture.png"})
+modes["meshes"][0]["primitives"] = [
+    {"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3, "material": 0, "mode": 2},
+    {"attributes": {"POSITION": 0}, "mode": 3},
+    {"attributes": {"POSITION": 0, "TEXCOORD_0": 2}, "material": 0, "mode": 0}]
+write("seeds/gltf/primitive_modes.gltf", json.dumps(modes))
 # The archived KHR_materials_pbrSpecularGlossiness, converted on import.
 specgloss = triangle_gltf("buffer.bin", {"uri": "texture.png"})
 specgloss["extensionsUsed"].append("KHR_materials_pbrSpecularGlossiness")

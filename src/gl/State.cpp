@@ -46,13 +46,13 @@ void State::forgetFramebuffer(uint32_t name)
     if (mFramebuffer == name) mFramebuffer = ~0u;
 }
 
-void State::drawTriangles(uint32_t count, bool indexed, uint32_t firstIndex)
+void State::draw(PrimitiveType type, uint32_t count, bool indexed, uint32_t firstIndex)
 {
+    const GLenum mode = type == PrimitiveType::Lines ? GL_LINES : type == PrimitiveType::Points ? GL_POINTS : GL_TRIANGLES;
     if (indexed) {
-        glDrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(uintptr_t(firstIndex) * sizeof(uint32_t)));
+        glDrawElements(mode, GLsizei(count), GL_UNSIGNED_INT, reinterpret_cast<const void*>(uintptr_t(firstIndex) * sizeof(uint32_t)));
     } else {
-        glDrawArrays(GL_TRIANGLES, 0, GLsizei(count));
+        glDrawArrays(mode, 0, GLsizei(count));
     }
     ++mDrawCalls;
 }

@@ -16,6 +16,8 @@ class VertexArray;
 
 enum class CompareOp : uint8_t { Less, LessEqual, Equal, Always };
 enum class CullMode : uint8_t { None, Back, Front };
+/// What a draw's vertices make: GL_TRIANGLES, GL_LINES (1 pixel wide), GL_POINTS (1 pixel).
+enum class PrimitiveType : uint8_t { Triangles, Lines, Points };
 /// WeightedOit: weighted blended order-independent transparency's two targets (McGuire &
 /// Bavoil 2013): attachment 0 sums (ONE, ONE), attachment 1 multiplies by 1 − source (ZERO,
 /// ONE_MINUS_SRC_COLOR).
@@ -84,8 +86,12 @@ public:
     static void memoryBarrier(Barrier barriers);
 
     /// Draws `count` vertices (or 32-bit indices, from index `firstIndex` of the bound index
-    /// buffer) of the bound vertex array as triangles.
-    void drawTriangles(uint32_t count, bool indexed, uint32_t firstIndex = 0);
+    /// buffer) of the bound vertex array as a list of `type`.
+    void draw(PrimitiveType type, uint32_t count, bool indexed, uint32_t firstIndex = 0);
+    void drawTriangles(uint32_t count, bool indexed, uint32_t firstIndex = 0)
+    {
+        draw(PrimitiveType::Triangles, count, indexed, firstIndex);
+    }
     /// Draws `instances` instances of the first `count` vertices, non-indexed (one draw call;
     /// gl_InstanceID runs from 0 in each).
     void drawTrianglesInstanced(uint32_t count, uint32_t instances);

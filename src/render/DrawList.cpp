@@ -63,7 +63,10 @@ DrawList DrawList::build(const GpuScene& scene, const glm::mat4& view, const glm
         case DrawFilter::Opaque: if (blended || transmissive) continue; break;
         case DrawFilter::Blended: if (!blended || transmissive) continue; break;
         case DrawFilter::Transmissive: if (!transmissive) continue; break;
-        case DrawFilter::ShadowCasters: if (!castsShadow(material) || !item.castShadows) continue; break;
+        case DrawFilter::ShadowCasters:
+            // A line or a point stops no light (it has no area).
+            if (!castsShadow(material) || !item.castShadows || p.topology != scene::Topology::Triangles) continue;
+            break;
         }
         const scene::Bounds world = p.bounds.transformed(item.world);
         if (!frustum.intersects(world)) continue;
@@ -157,13 +160,16 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
         state.bindVertexArray(p.geometry->vertexArray);
         const uint32_t first = p.indexed && !p.lods.empty() ? p.lods[size_t(command.lod)].first : 0u;
         const uint32_t count = p.indexed && !p.lods.empty() ? p.lods[size_t(command.lod)].count : p.count;
-        state.drawTriangles(count, p.indexed, first);
+        const gl::PrimitiveType type = p.topology == scene::Topology::Lines    ? gl::PrimitiveType::Lines
+                                       : p.topology == scene::Topology::Points ? gl::PrimitiveType::Points
+                                                                               : gl::PrimitiveType::Triangles;
+        state.draw(type, count, p.indexed, first);
         if (backFacesFirst) {
             pipeline.cull = gl::CullMode::Back;
             state.apply(pipeline);
-            state.drawTriangles(count, p.indexed, first);
+            state.draw(type, count, p.indexed, first);
         }
-        triangles += count / 3;
+        if (type == gl::PrimitiveType::Triangles) triangles += count / 3;
     }
     return triangles;
 }

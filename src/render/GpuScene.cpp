@@ -213,7 +213,7 @@ void GpuScene::buildLevelsOfDetail()
     std::unordered_map<const GpuGeometry*, std::vector<scene::LodLevel>> done;
     for (GpuPrimitive& gpu : mPrimitives) {
         const size_t triangles = gpu.count / 3;
-        if (triangles < scene::kLodMinTriangles) continue;
+        if (gpu.topology != scene::Topology::Triangles || triangles < scene::kLodMinTriangles) continue;
         GpuGeometry& geometry = *gpu.geometry;
         if (const auto it = done.find(&geometry); it != done.end()) {
             if (it->second.size() < 2) continue;
@@ -398,6 +398,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         gpu.geometry = geometryOf(p, name, shared);
         gpu.indexed = !p.indices.empty();
         gpu.count = uint32_t(gpu.indexed ? p.indices.size() : p.vertices.size());
+        gpu.topology = p.topology;
         auto record = [&](int material) { return material >= 0 && material < defaultMaterial ? material : defaultMaterial; };
         gpu.material = gpu.baseMaterial = record(p.material);
         for (const scene::VariantMapping& mapping : p.variants) gpu.variants.push_back({mapping.variant, record(mapping.material)});
@@ -428,13 +429,33 @@ GpuScene::GpuScene(const scene::Scene& scene)
         mRecordMaterial.push_back(mRecordMaterial[size_t(material)]);
         return found->second;
     };
+    // Lines and points without normals draw unlit (scene::Primitive::unlit): a copy of their
+    // material's record (or of its colour copy) with the unlit model.
+    std::map<int, int> unlitCopies;
+    auto unlitCopy = [&](int material) {
+        const auto [found, added] = unlitCopies.try_emplace(material, int(gpuMaterials.size()));
+        if (!added) return found->second;
+        gpuMaterials.push_back(gpuMaterials[size_t(material)]);
+        mMaterials.push_back(mMaterials[size_t(material)]);
+        uint64_t& features = mMaterials.back().features;
+        features = (features & ~uint64_t(kShadingFeatureMask)) | packShading({.model = scene::ShadingModel::Unlit});
+        mMaterials.back().unlitCopy = true;
+        mRecordMaterial.push_back(mRecordMaterial[size_t(material)]);
+        return found->second;
+    };
     for (size_t meshIndex = 0, primitiveIndex = 0; meshIndex < scene.meshes.size(); ++meshIndex) {
         for (const scene::Primitive& p : scene.meshes[meshIndex].primitives) {
             if (p.vertices.empty()) continue;
             GpuPrimitive& gpu = mPrimitives[primitiveIndex++];
+            if (p.hasColors) {
+                gpu.material = gpu.baseMaterial = colourCopy(gpu.baseMaterial);
+                for (scene::VariantMapping& mapping : gpu.variants) mapping.material = colourCopy(mapping.material);
+            }
+            if (p.unlit) {
+                gpu.material = gpu.baseMaterial = unlitCopy(gpu.baseMaterial);
+                for (scene::VariantMapping& mapping : gpu.variants) mapping.material = unlitCopy(mapping.material);
+            }
             if (!p.hasColors) continue;
-            gpu.material = gpu.baseMaterial = colourCopy(gpu.baseMaterial);
-            for (scene::VariantMapping& mapping : gpu.variants) mapping.material = colourCopy(mapping.material);
             const bool opaqueColours =
                 std::all_of(p.vertices.begin(), p.vertices.end(), [](const scene::Vertex& v) { return v.color.a >= 1.0f; });
             if (opaqueColours) continue;
@@ -510,7 +531,8 @@ GpuScene::GpuScene(const scene::Scene& scene)
             item.receiveShadows = instance.receiveShadows;
             item.visible = instance.visible;
             mDraws.push_back(item);
-            if (item.visible) mTriangles += mPrimitives[size_t(primitive)].count / 3;
+            if (item.visible && mPrimitives[size_t(primitive)].topology == scene::Topology::Triangles)
+                mTriangles += mPrimitives[size_t(primitive)].count / 3;
         }
     }
     updateBounds();
@@ -615,7 +637,7 @@ bool castsShadow(const MaterialBinding& material)
 void GpuScene::setShading(int material, const scene::MaterialShading& shading)
 {
     for (size_t record = 0; record < mMaterials.size(); ++record) {
-        if (mRecordMaterial[record] != material) continue;
+        if (mRecordMaterial[record] != material || mMaterials[record].unlitCopy) continue;
         uint64_t& features = mMaterials[record].features;
         features = (features & ~uint64_t(kShadingFeatureMask)) | packShading(shading);
     }

@@ -28,6 +28,7 @@ struct GpuPrimitive {
     std::shared_ptr<GpuGeometry> geometry;
     uint32_t count = 0;   ///< indices, or vertices when not indexed (level 0)
     bool indexed = false;
+    scene::Topology topology = scene::Topology::Triangles; ///< lines and points: no shadows, no levels of detail
     /// Levels of detail (scene/MeshLod.h) in the geometry's `indices`, once
     /// GpuScene::buildLevelsOfDetail has made them: level 0 is the primitive itself; empty: only that one.
     std::vector<scene::LodLevel> lods;
@@ -71,6 +72,9 @@ struct MaterialBinding {
     bool opaqueTexels = true;
     bool doubleSided = false;
     float transmission = 0.0f; ///< KHR_materials_transmission factor
+    /// A copy for lines and points without normals (scene::Primitive::unlit): stays unlit
+    /// whatever its material's shading is set to (setShading).
+    bool unlitCopy = false;
     /// SPECULA_MATERIAL_* bits (the record's 32, the shading choice's, and the extension
     /// textures' above them): selects the shader variant, and which extension texture units the
     /// draw binds (DrawList: clearcoat 19-21, sheen 22-23, anisotropy 24, iridescence 25-26,

@@ -104,6 +104,22 @@ std::vector<uint32_t> triangulate(const std::vector<uint32_t>& in, int mode)
     return out;
 }
 
+/// A primitive's index list as a line list, whatever its (line) mode.
+std::vector<uint32_t> lineList(const std::vector<uint32_t>& in, int mode)
+{
+    std::vector<uint32_t> out;
+    const size_t n = in.size();
+    if (mode == TINYGLTF_MODE_LINE) {
+        out.assign(in.begin(), in.begin() + std::ptrdiff_t(n - n % 2));
+    } else {
+        // The glTF 2.0 spec (Meshes, topology types): strip segment i is (i, i + 1); a loop
+        // adds (n - 1, 0).
+        for (size_t i = 0; i + 1 < n; ++i) out.insert(out.end(), {in[i], in[i + 1]});
+        if (mode == TINYGLTF_MODE_LINE_LOOP && n > 2) out.insert(out.end(), {in[n - 1], in[0]});
+    }
+    return out;
+}
+
 const char* modeName(int mode)
 {
     switch (mode) {
@@ -111,6 +127,9 @@ const char* modeName(int mode)
     case TINYGLTF_MODE_LINE: return "lines";
     case TINYGLTF_MODE_LINE_LOOP: return "line loops";
     case TINYGLTF_MODE_LINE_STRIP: return "line strips";
+    case TINYGLTF_MODE_TRIANGLE_STRIP: return "triangle strips";
+    case TINYGLTF_MODE_TRIANGLE_FAN: return "triangle fans";
+    case TINYGLTF_MODE_TRIANGLES: return "triangles";
     default: return "an unknown mode";
     }
 }
@@ -211,9 +230,18 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
 {
     // tinygltf reads an absent mode as TRIANGLES.
     const int mode = source.mode;
-    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
-        mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-        warn("{} draws {}, which are not supported; it is skipped", where, modeName(mode));
+    Topology topology = Topology::Triangles;
+    if (mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_STRIP || mode == TINYGLTF_MODE_LINE_LOOP)
+        topology = Topology::Lines;
+    else if (mode == TINYGLTF_MODE_POINTS)
+        topology = Topology::Points;
+    else if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        warn("{} draws {} (mode {}), which are not supported; it is skipped", where, modeName(mode), mode);
+        return std::nullopt;
+    }
+    if (topology != Topology::Triangles && gltf_detail::extension(source.extensions, "KHR_draco_mesh_compression")) {
+        warn("{} draws {} with KHR_draco_mesh_compression, which Specula decodes for triangles only; it is skipped", where,
+             modeName(mode));
         return std::nullopt;
     }
     auto attribute = [&](const char* name) {
@@ -265,6 +293,11 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
     const auto colors = optional("COLOR_0", 3, 4);
 
     Primitive primitive;
+    primitive.topology = topology;
+    // Strips, fans and loops become lists; lists stay as they are.
+    const auto assemble = [&](const std::vector<uint32_t>& in) {
+        return topology == Topology::Triangles ? triangulate(in, mode) : topology == Topology::Lines ? lineList(in, mode) : in;
+    };
     primitive.vertices.resize(vertexCount);
     for (size_t i = 0; i < vertexCount; ++i) {
         Vertex& v = primitive.vertices[i];
@@ -302,11 +335,11 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
         for (uint32_t index : indices.values)
             if (index >= vertexCount)
                 fail("{} refer to vertex {}, but there are {} vertices", indexWhere, index, vertexCount);
-        primitive.indices = triangulate(indices.values, mode);
-    } else if (mode != TINYGLTF_MODE_TRIANGLES) {
+        primitive.indices = assemble(indices.values);
+    } else if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_LINE && mode != TINYGLTF_MODE_POINTS) {
         std::vector<uint32_t> sequence(vertexCount);
         for (size_t i = 0; i < vertexCount; ++i) sequence[i] = uint32_t(i);
-        primitive.indices = triangulate(sequence, mode);
+        primitive.indices = assemble(sequence);
     }
 
     if (source.material >= 0) {
@@ -315,6 +348,13 @@ std::optional<Primitive> Importer::convertPrimitive(const tinygltf::Primitive& s
     }
     readVariantMappings(source, primitive, where);
 
+    if (!normals && topology != Topology::Triangles) {
+        // A line or a point has no face to take a normal from: drawn unlit (Primitive::unlit).
+        primitive.unlit = true;
+        primitive.hasTangents = false;
+        return primitive;
+    }
+    if (topology != Topology::Triangles) return primitive; // lit by its normals; no normal map without faces
     if (!normals) {
         // The glTF 2.0 spec (Meshes): without normals, flat normals, and tangents are ignored.
         generateFlatNormals(primitive);

@@ -58,6 +58,7 @@ std::optional<PickHit> pick(const Scene& scene, const glm::vec3& origin, const g
         const Mesh& mesh = scene.meshes[size_t(instance.mesh)];
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
             const Primitive& primitive = mesh.primitives[p];
+            if (primitive.topology != Topology::Triangles) continue; // a line or a point has no area to hit
             if (!primitive.bounds.empty() && !hitsBounds(primitive.bounds, o, d, bestT)) continue;
             const size_t count = primitive.indices.empty() ? primitive.vertices.size() : primitive.indices.size();
             auto vertex = [&](size_t i) -> const glm::vec3& {

@@ -209,7 +209,8 @@ size_t Scene::triangleCount() const
     size_t count = 0;
     for (const auto& instance : meshInstances())
         for (const auto& primitive : meshes[size_t(instance.mesh)].primitives)
-            count += (primitive.indices.empty() ? primitive.vertices.size() : primitive.indices.size()) / 3;
+            if (primitive.topology == Topology::Triangles)
+                count += (primitive.indices.empty() ? primitive.vertices.size() : primitive.indices.size()) / 3;
     return count;
 }
 

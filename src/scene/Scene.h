@@ -223,9 +223,16 @@ struct VariantMapping {
 };
 
 /// One draw: triangles with one material.
+/// What a primitive draws (glTF's modes: strips, fans and loops are made lists at import).
+enum class Topology : uint8_t { Triangles, Lines, Points };
+
 struct Primitive {
     std::vector<Vertex> vertices;
-    std::vector<uint32_t> indices; ///< empty = non-indexed (vertices are a triangle list)
+    std::vector<uint32_t> indices; ///< empty = non-indexed (the vertices are a list of `topology`)
+    Topology topology = Topology::Triangles;
+    /// Lines and points without normals: nothing to light them by, so they are drawn with the
+    /// unlit model (their colour is the base colour term), whatever their material's.
+    bool unlit = false;
     int material = -1;             ///< -1 = the default material
     /// KHR_materials_variants: the primitive's material under each variant that maps it
     /// (`material` under the others and when none is chosen).

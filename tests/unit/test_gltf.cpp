@@ -20,6 +20,7 @@
 #include "TestFiles.h"
 #include "core/Error.h"
 #include "scene/GltfImporter.h"
+#include "scene/Picking.h"
 
 namespace fs = std::filesystem;
 using namespace specula;
@@ -928,7 +929,7 @@ TEST(GltfErrors, RandomCorruptionNeverCrashes)
 
 // --- features on small files -----------------------------------------------------------------
 
-TEST(GltfFeatures, StripsFansAndSkippedPoints)
+TEST(GltfFeatures, StripsFansAndPoints)
 {
     TempDir dir;
     GltfBuilder b;
@@ -956,9 +957,11 @@ TEST(GltfFeatures, StripsFansAndSkippedPoints)
     for (const Vertex& v : fan.vertices) EXPECT_EQ(v.normal, glm::vec3(0, 0, 1));
     EXPECT_EQ(fan.vertices[2].position, glm::vec3(0, 0, 0)); // (i+1, i+2, 0)
 
-    EXPECT_TRUE(scene.meshes[2].primitives.empty());
-    ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_NE(scene.warnings[0].find("points"), std::string::npos) << scene.warnings[0];
+    // Points are drawn as points (GltfMeshes.PointAndLineModesBecomeLists), unlit without normals.
+    ASSERT_EQ(scene.meshes[2].primitives.size(), 1u);
+    EXPECT_EQ(scene.meshes[2].primitives[0].topology, Topology::Points);
+    EXPECT_TRUE(scene.meshes[2].primitives[0].unlit);
+    EXPECT_TRUE(scene.warnings.empty());
 
     // 0 1 2 2 3 gives (0,1,2), (1,2,2) dropped, (2,2,3) dropped: one triangle.
     EXPECT_EQ(scene.meshes[3].primitives.at(0).vertices.size(), 3u);
@@ -2093,4 +2096,44 @@ TEST(GltfExtensions, MeshGpuInstancingIsHeldToTheInstanceLimit)
         EXPECT_NE(std::string(e.what()).find("node 1 EXT_mesh_gpu_instancing TRANSLATION brings the model to 6 instances, over the limit of 5 (--max-instances)"),
                   std::string::npos) << e.what();
     }
+}
+
+// glTF's point and line modes (tests/assets/gltf/primitive_modes.gltf, make_primitive_modes.py):
+// strips and loops become segment lists by the spec's rules, lists stay as they are (indexed or
+// not); lines and points without normals are drawn unlit, the one with normals keeps them; none
+// counts as triangles or can be picked. An odd LINES index is dropped; an unknown mode is a
+// warning. Broken on purpose (2026-12-07): a loop left open, and a strip read as a list, failed.
+TEST(GltfMeshes, PointAndLineModesBecomeLists)
+{
+    const Scene s = loadGltf((kTestAssets / "primitive_modes.gltf").string());
+    EXPECT_TRUE(s.warnings.empty());
+    ASSERT_EQ(s.meshes.size(), 5u);
+    const Primitive& points = s.meshes[0].primitives.at(0);
+    EXPECT_EQ(points.topology, Topology::Points);
+    EXPECT_TRUE(points.indices.empty()); // non-indexed: the vertices are the list
+    EXPECT_EQ(points.vertices.size(), 4u);
+    EXPECT_TRUE(points.unlit);
+    const Primitive& lines = s.meshes[1].primitives.at(0);
+    EXPECT_EQ(lines.topology, Topology::Lines);
+    EXPECT_EQ(lines.indices, (std::vector<uint32_t>{0, 1, 2, 3}));
+    EXPECT_EQ(s.meshes[2].primitives.at(0).indices, (std::vector<uint32_t>{0, 1, 1, 2}));       // the strip
+    EXPECT_EQ(s.meshes[3].primitives.at(0).indices, (std::vector<uint32_t>{0, 1, 1, 2, 2, 3, 3, 0})); // the loop
+    EXPECT_TRUE(s.meshes[3].primitives.at(0).unlit);
+    const Primitive& lit = s.meshes[4].primitives.at(0);
+    EXPECT_FALSE(lit.unlit);
+    EXPECT_EQ(lit.vertices[0].normal, glm::vec3(0, 0, 1));
+    EXPECT_EQ(s.triangleCount(), 0u);
+    EXPECT_FALSE(pick(s, {-3.0f, 1.5f, 5.0f}, {0, 0, -1}).has_value()); // straight at the first point
+
+    // An odd number of LINES indices drops the last; mode 7 is no glTF mode.
+    nlohmann::json doc = nlohmann::json::parse(readFile(kTestAssets / "primitive_modes.gltf"));
+    doc["accessors"][doc["meshes"][1]["primitives"][0]["indices"].get<int>()]["count"] = 3;
+    doc["meshes"][2]["primitives"][0]["mode"] = 7;
+    const std::string text = doc.dump();
+    const Scene edited = loadGltfFromMemory(std::vector<unsigned char>(text.begin(), text.end()), (kTestAssets / "edited.gltf").string());
+    EXPECT_EQ(edited.meshes[1].primitives.at(0).indices, (std::vector<uint32_t>{0, 1}));
+    EXPECT_TRUE(edited.meshes[2].primitives.empty());
+    ASSERT_EQ(edited.warnings.size(), 1u);
+    EXPECT_NE(edited.warnings[0].find("mesh 2 primitive 0 draws an unknown mode (mode 7), which are not supported"), std::string::npos)
+        << edited.warnings[0];
 }

@@ -6,7 +6,8 @@
 #     (0, 1.5)-(2, 1.5) and (0, 0.5)-(2, 1.0), unlit green;
 #   mesh 2 "strip", LINE_STRIP (non-indexed): (-3, -0.5), (-1, -0.5), (-1, -1.5), unlit blue;
 #   mesh 3 "loop", LINE_LOOP (indexed, unsigned shorts): the square (0.5, -0.5), (1.5, -0.5),
-#     (1.5, -1.5), (0.5, -1.5), closed back to its first vertex, unlit yellow;
+#     (1.5, -1.5), (0.5, -1.5), closed back to its first vertex, a lit yellow material (no
+#     KHR_materials_unlit) but no NORMAL: drawn unlit, yellow;
 #   mesh 4 "lit", LINES with NORMAL (0, 0, 1): (2.5, 0)-(3.5, 0), a Lambertian white (base 0.8,
 #     KHR_materials_specular factor 0) lit by a directional light of 2 lux shining along -Z.
 import json, struct
@@ -53,7 +54,9 @@ doc = {
                {"name": "loop", "primitives": [{"attributes": {"POSITION": loop}, "indices": loop_indices, "mode": 2, "material": 3}]},
                {"name": "lit", "primitives": [{"attributes": {"POSITION": lit, "NORMAL": lit_normals}, "mode": 1, "material": 4}]}],
     "materials": [unlit("red", [1.0, 0.0, 0.0]), unlit("green", [0.0, 1.0, 0.0]), unlit("blue", [0.0, 0.0, 1.0]),
-                  unlit("yellow", [1.0, 1.0, 0.0]),
+                  {"name": "yellow", "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 0.0, 1.0], "metallicFactor": 0.0,
+                                                              "roughnessFactor": 1.0},
+                   "extensions": {"KHR_materials_specular": {"specularFactor": 0.0}}},
                   {"name": "white", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1.0], "metallicFactor": 0.0,
                                                              "roughnessFactor": 1.0},
                    "extensions": {"KHR_materials_specular": {"specularFactor": 0.0}}}],
