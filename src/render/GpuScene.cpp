@@ -154,6 +154,29 @@ void packFactors(const scene::Material& m, shared::GpuMaterial& gpu)
     gpu.diffuseTransmission = glm::vec4(m.diffuseTransmissionColorFactor, m.diffuseTransmissionFactor);
 }
 
+/// The layers' variants a record's factors switch on (MaterialData.h bits, those above 31 the
+/// binding's only): a layer of factor 0 is no layer at all — the texture only scales the factor,
+/// as each extension says —, so its variant and textures go. One rule for the load, the viewer's
+/// edits and the animations' (GpuScene::writeRecord).
+constexpr uint64_t kLayerFeatures = SPECULA_MATERIAL_TRANSMISSION | SPECULA_MATERIAL_DISPERSION | SPECULA_MATERIAL_CLEARCOAT |
+                                    SPECULA_MATERIAL_SHEEN | SPECULA_MATERIAL_ANISOTROPY | SPECULA_MATERIAL_IRIDESCENCE |
+                                    SPECULA_MATERIAL_DIFFUSE_TRANSMISSION;
+uint64_t layerFeatures(const shared::GpuMaterial& r)
+{
+    uint64_t bits = 0;
+    if (r.transmission.x > 0.0f) bits |= SPECULA_MATERIAL_TRANSMISSION;
+    // Dispersion spreads what a volume refracts: nothing to spread without a thickness.
+    if (r.attenuation.w > 0.0f && r.transmission.z > 0.0f) bits |= SPECULA_MATERIAL_DISPERSION;
+    if (r.clearcoat.x > 0.0f) bits |= SPECULA_MATERIAL_CLEARCOAT;
+    // A black sheen colour is no sheen (the extension's words).
+    if (glm::any(glm::greaterThan(glm::vec3(r.sheen), glm::vec3(0.0f)))) bits |= SPECULA_MATERIAL_SHEEN;
+    // Strength 0 is the isotropic lobe.
+    if (r.anisotropy.x > 0.0f) bits |= SPECULA_MATERIAL_ANISOTROPY;
+    if (r.iridescence.x > 0.0f) bits |= SPECULA_MATERIAL_IRIDESCENCE;
+    if (r.diffuseTransmission.w > 0.0f) bits |= SPECULA_MATERIAL_DIFFUSE_TRANSMISSION;
+    return bits;
+}
+
 struct SharedLodChain {
     const scene::Primitive* source = nullptr;
     scene::LodChain chain;
@@ -332,25 +355,15 @@ GpuScene::GpuScene(const scene::Scene& scene)
             if (TextureSlot(slot) == TextureSlot::DiffuseTransmission || TextureSlot(slot) == TextureSlot::DiffuseTransmissionColor)
                 textureFeatures |= SPECULA_MATERIAL_DIFFUSE_TRANSMISSION_TEXTURES;
         }
-        // KHR_materials_diffuse_transmission: a zero factor is none (the texture only scales it).
-        if (m.diffuseTransmissionFactor > 0.0f) textureFeatures |= SPECULA_MATERIAL_DIFFUSE_TRANSMISSION;
         if (m.doubleSided) gpu.flags.x |= SPECULA_MATERIAL_DOUBLE_SIDED;
         if (m.alphaMode == scene::AlphaMode::Mask) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_MASK;
         if (m.alphaMode == scene::AlphaMode::Blend) gpu.flags.x |= SPECULA_MATERIAL_ALPHA_BLEND;
         if (m.alphaMode == scene::AlphaMode::Blend && m.blendMode == scene::BlendMode::Transparent)
             gpu.flags.x |= SPECULA_MATERIAL_BLEND_TRANSPARENT;
-        if (m.transmissionFactor > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_TRANSMISSION;
-        // Dispersion spreads what a volume refracts: nothing to spread without one.
-        if (m.dispersion > 0.0f && m.thickness > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_DISPERSION;
-        // A zero factor is no layer at all (the texture only scales the factor): no variant for it.
-        if (m.clearcoatFactor > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_CLEARCOAT;
-        // A black sheen colour is no sheen (the extension's words); the texture only scales it.
-        if (glm::any(glm::greaterThan(m.sheenColorFactor, glm::vec3(0.0f)))) gpu.flags.x |= SPECULA_MATERIAL_SHEEN;
-        // Strength 0 is the isotropic lobe (the texture's blue only scales it): no variant.
-        if (m.anisotropyStrength > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_ANISOTROPY;
-        if (m.iridescenceFactor > 0.0f) gpu.flags.x |= SPECULA_MATERIAL_IRIDESCENCE;
+        const uint64_t layers = layerFeatures(gpu);
+        gpu.flags.x |= uint32_t(layers); // the bits above 31 are the binding's only
         // The shading model and BRDF terms select the variant too (not read by the shaders).
-        binding.features = gpu.flags.x | packShading(m.shading) | textureFeatures;
+        binding.features = gpu.flags.x | packShading(m.shading) | textureFeatures | layers;
         gpuMaterials.push_back(gpu);
         mRecordMaterial.push_back(int(mMaterials.size()));
         mMaterials.push_back(binding);
@@ -658,21 +671,6 @@ void GpuScene::setBlendMode(int material, scene::BlendMode mode)
     }
 }
 
-void GpuScene::setFeature(int material, uint64_t bit, bool on)
-{
-    for (size_t record = 0; record < mMaterials.size(); ++record) {
-        if (mRecordMaterial[record] != material) continue;
-        MaterialBinding& binding = mMaterials[record];
-        if (((binding.features & bit) != 0) == on) continue; // nothing to write
-        binding.features = on ? binding.features | bit : binding.features & ~bit;
-        // Bits above the record's 32 live in the binding only (MaterialData.h).
-        const uint32_t recordBit = uint32_t(bit);
-        mRecords[record].flags.x = (mRecords[record].flags.x & ~recordBit) | uint32_t(binding.features & recordBit);
-        mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t),
-                               &mRecords[record].flags.x);
-    }
-}
-
 namespace {
 
 /// The floats of a material's record an animated field is packed into (packFactors): a first
@@ -743,31 +741,6 @@ void GpuScene::setAnimatedFields(int material, const scene::Material& m, const s
                 if (r.size > 0 && std::memcmp(before + r.offset, after + r.offset, r.size) != 0)
                     writeRecord(record, r.offset, r.size, after + r.offset);
     }
-    // A factor of 0 is no layer at all, as at load: the variants follow the animated factors.
-    for (const scene::AnimatedProperty& p : fields) {
-        using F = scene::AnimatedField;
-        switch (p.field) {
-        case F::ClearcoatFactor: setFeature(material, SPECULA_MATERIAL_CLEARCOAT, m.clearcoatFactor > 0.0f); break;
-        case F::SheenColor:
-            setFeature(material, SPECULA_MATERIAL_SHEEN, glm::any(glm::greaterThan(m.sheenColorFactor, glm::vec3(0.0f))));
-            break;
-        case F::AnisotropyStrength: setFeature(material, SPECULA_MATERIAL_ANISOTROPY, m.anisotropyStrength > 0.0f); break;
-        case F::IridescenceFactor: setFeature(material, SPECULA_MATERIAL_IRIDESCENCE, m.iridescenceFactor > 0.0f); break;
-        case F::Dispersion:
-        case F::Thickness: setFeature(material, SPECULA_MATERIAL_DISPERSION, m.dispersion > 0.0f && m.thickness > 0.0f); break;
-        case F::Transmission:
-            // The draw moves between the opaque and the transmissive lists, and the shadow rule
-            // (castsShadow) reads the factor.
-            setFeature(material, SPECULA_MATERIAL_TRANSMISSION, m.transmissionFactor > 0.0f);
-            for (size_t record = 0; record < mMaterials.size(); ++record)
-                if (mRecordMaterial[record] == material) mMaterials[record].transmission = m.transmissionFactor;
-            break;
-        case F::DiffuseTransmission:
-            setFeature(material, SPECULA_MATERIAL_DIFFUSE_TRANSMISSION, m.diffuseTransmissionFactor > 0.0f);
-            break;
-        default: break;
-        }
-    }
 }
 
 void GpuScene::writeRecord(size_t record, size_t offset, size_t size, const void* data)
@@ -777,6 +750,16 @@ void GpuScene::writeRecord(size_t record, size_t offset, size_t size, const void
     std::memcpy(reinterpret_cast<std::byte*>(&mRecords[record]) + offset, data, size);
     mMaterialBuffer.update(materialOffset(int(record)) + offset, size, data);
     if (offset <= alpha && alpha < offset + size) updateCoverage(record);
+    // The layers' variants follow their factors (layerFeatures), and the shadow rule the
+    // transmission (castsShadow).
+    MaterialBinding& binding = mMaterials[record];
+    shared::GpuMaterial& r = mRecords[record];
+    binding.transmission = r.transmission.x;
+    binding.features = (binding.features & ~kLayerFeatures) | layerFeatures(r);
+    const uint32_t flags = (r.flags.x & ~uint32_t(kLayerFeatures)) | uint32_t(binding.features & kLayerFeatures);
+    if (flags == r.flags.x) return;
+    r.flags.x = flags;
+    mMaterialBuffer.update(materialOffset(int(record)) + offsetof(shared::GpuMaterial, flags), sizeof(uint32_t), &r.flags.x);
 }
 
 void GpuScene::writeMaterial(int material, size_t offset, size_t size, const void* data)

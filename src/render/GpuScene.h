@@ -124,18 +124,16 @@ public:
     void setShading(int material, const scene::MaterialShading& shading);
     /// Sets or clears SPECULA_MATERIAL_BLEND_TRANSPARENT of a blended material (and its copies).
     void setBlendMode(int material, scene::BlendMode mode);
-    /// Sets or clears feature bit `bit` (a SPECULA_MATERIAL_* that selects a variant) of
-    /// `material` and its copies, in the variant key and the uploaded record (a clearcoat of
-    /// factor 0, a black sheen, anisotropy of strength 0, a film of factor 0: the variant goes,
-    /// and its textures). Bits above 31 are the binding's only (MaterialData.h).
-    void setFeature(int material, uint64_t bit, bool on);
     /// KHR_animation_pointer: rewrites the animated `fields` of `material` from `m`, its posed
-    /// copy (the floats that changed, in every record it has; the other fields keep what they
-    /// hold, a viewer's edits included), and the variant bits those factors switch (a
-    /// clearcoat, sheen, anisotropy, film or diffuse transmission at 0 or not).
+    /// copy (the floats that changed, in every record it has, through writeMaterial's path; the
+    /// other fields keep what they hold, a viewer's edits included).
     void setAnimatedFields(int material, const scene::Material& m, const std::vector<scene::AnimatedProperty>& fields);
     /// Writes `size` bytes at `offset` within `material`'s record (and its copies'), in the
-    /// CPU copy and in the buffer: no other byte of the buffer is written.
+    /// CPU copy and in the buffer: no other byte of the buffer is written but the record's
+    /// flags when a layer's factor crosses 0 (a clearcoat, sheen, anisotropy, film,
+    /// transmission, dispersion or diffuse transmission of factor 0 is no layer: its variant
+    /// goes, and its textures; bits above 31 are the binding's only, MaterialData.h), and the
+    /// shadow rule follows the transmission.
     void writeMaterial(int material, size_t offset, size_t size, const void* data);
     size_t textureBytes() const { return mTextureBytes; }
     /// Makes every large primitive's levels of detail (scene/MeshLod.h), once: a frame that asks
@@ -173,7 +171,8 @@ private:
     /// Draws record `record` opaque or blended (MaterialBinding::alphaMode) from its declared
     /// mode, its texels and its factor's alpha as the record holds it; its variant key follows.
     void updateCoverage(size_t record);
-    /// One record's bytes, in the CPU copy and in the buffer (and its coverage when the alpha changes).
+    /// One record's bytes, in the CPU copy and in the buffer (and its coverage when the alpha
+    /// changes, its layers' variants and shadow rule when their factors do: writeMaterial).
     void writeRecord(size_t record, size_t offset, size_t size, const void* data);
 
     /// What posing needs of the scene: its nodes, meshes, skins and animations (no images).

@@ -607,7 +607,6 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::ClearcoatFactor: {
         const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
         gpu.writeMaterial(material, offsetof(GpuMaterial, clearcoat), sizeof(float), &v.x);
-        gpu.setFeature(material, SPECULA_MATERIAL_CLEARCOAT, v.x > 0.0f);
         break;
     }
     case MaterialParameter::ClearcoatRoughness: {
@@ -618,13 +617,11 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::Dispersion: {
         const glm::vec4 v(std::max(value.x, 0.0f));
         gpu.writeMaterial(material, offsetof(GpuMaterial, attenuation) + 3 * sizeof(float), sizeof(float), &v.x);
-        gpu.setFeature(material, SPECULA_MATERIAL_DISPERSION, v.x > 0.0f && gpu.record(material).transmission.z > 0.0f);
         break;
     }
     case MaterialParameter::SheenColor: {
         const glm::vec3 v = glm::clamp(glm::vec3(value), 0.0f, 1.0f);
         gpu.writeMaterial(material, offsetof(GpuMaterial, sheen), 3 * sizeof(float), &v.x);
-        gpu.setFeature(material, SPECULA_MATERIAL_SHEEN, glm::any(glm::greaterThan(v, glm::vec3(0.0f))));
         break;
     }
     case MaterialParameter::SheenRoughness: {
@@ -635,7 +632,6 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::AnisotropyStrength: {
         const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
         gpu.writeMaterial(material, offsetof(GpuMaterial, anisotropy), sizeof(float), &v.x);
-        gpu.setFeature(material, SPECULA_MATERIAL_ANISOTROPY, v.x > 0.0f);
         break;
     }
     case MaterialParameter::AnisotropyRotation: {
@@ -646,7 +642,6 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::IridescenceFactor: {
         const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
         gpu.writeMaterial(material, offsetof(GpuMaterial, iridescence), sizeof(float), &v.x);
-        gpu.setFeature(material, SPECULA_MATERIAL_IRIDESCENCE, v.x > 0.0f);
         break;
     }
     case MaterialParameter::IridescenceIor: {
@@ -662,7 +657,6 @@ void Renderer::setMaterialParameter(int material, MaterialParameter parameter, c
     case MaterialParameter::DiffuseTransmission: {
         const glm::vec4 v(std::clamp(value.x, 0.0f, 1.0f));
         gpu.writeMaterial(material, offsetof(GpuMaterial, diffuseTransmission) + 3 * sizeof(float), sizeof(float), &v.x);
-        gpu.setFeature(material, SPECULA_MATERIAL_DIFFUSE_TRANSMISSION, v.x > 0.0f);
         break;
     }
     case MaterialParameter::DiffuseTransmissionColor: {

@@ -197,18 +197,27 @@ TEST_F(GlTest, EditsKeepTheExtensionTextureBits)
     check("setShading");
     gpu.setBlendMode(0, scene::BlendMode::Transparent);
     check("setBlendMode");
-    gpu.setFeature(0, SPECULA_MATERIAL_CLEARCOAT, true);
-    gpu.setFeature(0, SPECULA_MATERIAL_CLEARCOAT, false);
-    check("setFeature");
+    // A layer's factor to 1 and back to 0 (the viewer's clearcoat slider): its variant comes and goes.
+    const size_t clearcoat = offsetof(shared::GpuMaterial, clearcoat);
+    const float one = 1.0f, zero = 0.0f;
+    gpu.writeMaterial(0, clearcoat, sizeof(float), &one);
+    EXPECT_NE(gpu.materials()[0].features & SPECULA_MATERIAL_CLEARCOAT, 0u);
+    EXPECT_NE(gpu.record(0).flags.x & SPECULA_MATERIAL_CLEARCOAT, 0u);
+    gpu.writeMaterial(0, clearcoat, sizeof(float), &zero);
+    EXPECT_EQ(gpu.materials()[0].features & SPECULA_MATERIAL_CLEARCOAT, 0u);
+    EXPECT_EQ(gpu.record(0).flags.x & SPECULA_MATERIAL_CLEARCOAT, 0u);
+    check("a layer's factor");
     // A bit above the record's 32 (the viewer's diffuse transmission slider at 0 and back): the
     // binding's only, the record's flags untouched.
     const uint32_t recordFlags = gpu.record(0).flags.x;
-    gpu.setFeature(0, SPECULA_MATERIAL_DIFFUSE_TRANSMISSION, false);
+    const size_t fraction = offsetof(shared::GpuMaterial, diffuseTransmission) + 3 * sizeof(float);
+    gpu.writeMaterial(0, fraction, sizeof(float), &zero);
     EXPECT_EQ(gpu.materials()[0].features & SPECULA_MATERIAL_DIFFUSE_TRANSMISSION, 0u);
     EXPECT_NE(gpu.materials()[0].features & SPECULA_MATERIAL_DIFFUSE_TRANSMISSION_TEXTURES, 0u);
     EXPECT_EQ(gpu.record(0).flags.x, recordFlags);
-    gpu.setFeature(0, SPECULA_MATERIAL_DIFFUSE_TRANSMISSION, true);
-    check("setFeature above bit 31");
+    const float half = 0.5f;
+    gpu.writeMaterial(0, fraction, sizeof(float), &half);
+    check("a factor above bit 31");
     int records = 0;
     for (const render::MaterialBinding& m : gpu.materials()) records += m.textures[size_t(render::TextureSlot::Specular)] != nullptr;
     EXPECT_EQ(records, 2); // the material's record and its vertex-colour copy
