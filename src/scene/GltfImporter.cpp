@@ -24,7 +24,7 @@ constexpr std::string_view kSupportedExtensions[] = {
     "EXT_mesh_gpu_instancing", // each instance a child node of its node (GltfImporter.cpp, meshInstances)
     "EXT_meshopt_compression",    // bufferViews decoded with meshoptimizer (GltfCompression.cpp)
     "EXT_texture_webp",           // WebP images decoded with libwebp (GltfMaterials.cpp)
-    "KHR_animation_pointer",      // materials' factors, texture transforms, lights (GltfAnimation.cpp)
+    "KHR_animation_pointer",      // materials, texture transforms, lights, cameras, node visibility (GltfAnimation.cpp)
     "KHR_draco_mesh_compression", // primitives decoded with Draco (GltfCompression.cpp)
     "KHR_lights_punctual",
     "KHR_materials_anisotropy", // the anisotropic specular lobe (Material::anisotropy*)
@@ -44,6 +44,9 @@ constexpr std::string_view kSupportedExtensions[] = {
     "KHR_materials_volume",       // thickness (factor and texture) and attenuation (Material::thickness, attenuation*)
     "KHR_mesh_quantization", // integer attributes: the accessor reader handles every component type
     "KHR_texture_transform",
+    // Metadata (XMP as JSON-LD packets on the asset and its objects): nothing in it changes
+    // the image, so there is nothing to read and nothing to warn about.
+    "KHR_xmp_json_ld",
     // Textures carry a DDS source in the extension; we use their plain `source` when there is
     // one and drop the texture with a warning otherwise. Large real scenes (GasStation) require
     // it without using any texture at all.

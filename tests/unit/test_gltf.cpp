@@ -1506,6 +1506,17 @@ TEST(GltfExtensions, BasisuIsRefusedWhenRequiredAndWarnedAboutOnceWhenOptional)
     EXPECT_NE(scene.warnings[0].find("KHR_texture_basisu"), std::string::npos) << scene.warnings[0];
     EXPECT_NE(scene.warnings[1].find("EXT_made_up"), std::string::npos) << scene.warnings[1];
     EXPECT_FALSE(scene.materials.at(0).baseColorTexture.valid()); // drawn without it
+
+    // KHR_xmp_json_ld is metadata: nothing to draw, nothing to warn about.
+    b.doc["extensionsUsed"] = json::array({"KHR_xmp_json_ld"});
+    b.doc["extensions"]["KHR_xmp_json_ld"]["packets"] = {{{"@context", {{"dc", "http://purl.org/dc/elements/1.1/"}}}, {"dc:title", "a triangle"}}};
+    b.doc["asset"]["extensions"]["KHR_xmp_json_ld"]["packet"] = 0;
+    b.doc["textures"] = {{{"source", 0}}};
+    b.doc["images"] = {{{"uri", "texture.png"}}};
+    writeFile(dir / "texture.png", readFile(fs::path(SPECULA_SOURCE_DIR) / "fuzz/files/texture.png"));
+    for (auto& mesh : b.doc["meshes"]) mesh["primitives"][0].erase("extensions");
+    ASSERT_NO_THROW(scene = loadGltf(b.write(dir, "metadata.gltf")));
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
 }
 
 TEST(GltfExtensions, UnlitMaterial)
