@@ -31,8 +31,8 @@ void addLoadOptions(CLI::App* command, scene::LoadOptions& load)
 
 void addFrameOptions(CLI::App* command, setup::FrameOptions& frame)
 {
-    command->add_option("--width", frame.width, "image width in pixels (default 1280)");
-    command->add_option("--height", frame.height, "image height in pixels (default 720)");
+    command->add_option("--width", frame.width, "image width in pixels (default 1280; render: to match the camera's aspectRatio)");
+    command->add_option("--height", frame.height, "image height in pixels (default 720; render: to match a width given with a camera's aspectRatio)");
     command->add_option("--msaa", frame.msaa, "samples per pixel: 1 (pixel centre, no anti-aliasing), 2, 4 (default), 8");
     command->add_option("--exposure", frame.exposure, "exposure in EV: the image is multiplied by 2^EV (default 0)");
     command->add_option("--tonemap", frame.tonemap, "none, reinhard, reinhard-ext, aces, neutral (default), agx");

@@ -42,6 +42,7 @@ std::filesystem::path expandOutput(const std::string& pattern, const std::string
 
 /// One image of a batch: a view of a loaded scene, written to `output`.
 struct Shot {
+    render::FrameSettings settings; ///< the scene's, sized for the shot's camera (setup::fitSizeToCamera)
     render::View view;
     std::filesystem::path output;
     std::string label;
@@ -104,7 +105,9 @@ int runRender(const RenderArgs& args)
             setup::FrameOptions options = args.frame;
             options.camera = camera;
             Shot shot;
-            shot.view = setup::prepareView(s.document, options, s.settings, &defaultLights, s.environment.has_value(), s.animation);
+            shot.settings = s.settings;
+            setup::fitSizeToCamera(shot.settings, s.document, options);
+            shot.view = setup::prepareView(s.document, options, shot.settings, &defaultLights, s.environment.has_value(), s.animation);
             const std::string cameraName = camera >= 0 ? std::to_string(camera) : "framed";
             shot.output = patterned ? expandOutput(args.output, s.name, cameraName) : std::filesystem::path(args.output);
             shot.label = args.frame.allCameras ? s.name + " camera " + cameraName : s.name;
@@ -137,8 +140,8 @@ int runRender(const RenderArgs& args)
             renderer.setEnvironment(*s.environment, bake, setup::cacheDirectory(args.frame));
         else
             renderer.clearEnvironment();
-        const render::FrameSettings& settings = s.settings;
         for (const Shot& shot : s.shots) {
+            const render::FrameSettings& settings = shot.settings;
             const render::View& view = shot.view;
             if (!args.printGraph.empty()) {
                 const std::string dot = renderer.frameGraphDot(view, settings);

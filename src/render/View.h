@@ -17,7 +17,8 @@ struct View {
 };
 
 /// The scene's camera `index` (in Scene::cameraInstances() order) for a viewport of `aspect`.
-/// The viewport's aspect wins over the camera's aspectRatio so images are never stretched.
+/// The viewport's aspect wins over the camera's aspectRatio so images are never stretched
+/// (`specula render` sizes the image to the aspect ratio where it can: setup::fitSizeToCamera).
 /// `pose`: an animation's (scene/Pose.h): the camera's node where the pose puts it, and its
 /// KHR_animation_pointer properties; none: the rest pose. Throws specula::Error when there is
 /// no such camera.

@@ -342,6 +342,21 @@ std::filesystem::path cacheDirectory(const FrameOptions& options)
     return options.noCache ? std::filesystem::path() : render::defaultCacheDirectory();
 }
 
+void fitSizeToCamera(render::FrameSettings& settings, const scene::SceneDocument& document, const FrameOptions& options)
+{
+    const std::vector<scene::CameraInstance> cameras = document.scene.cameraInstances();
+    const int index = options.camera >= 0 ? options.camera : cameras.empty() ? -1 : 0;
+    if (index < 0 || size_t(index) >= cameras.size()) return; // the framed view, or an error prepareView reports
+    const scene::Camera& camera = document.scene.cameras[size_t(cameras[size_t(index)].camera)];
+    if (camera.type != scene::Camera::Type::Perspective || !(camera.aspectRatio > 0.0f)) return;
+    const std::optional<int> width = options.width ? options.width : document.render.width;
+    const std::optional<int> height = options.height ? options.height : document.render.height;
+    if (width && height) return; // the size asked for: the viewport's aspect wins (render::cameraView)
+    const auto clampSide = [](double side) { return int(std::clamp(std::lround(side), 1L, 16384L)); };
+    if (width) settings.height = clampSide(*width / double(camera.aspectRatio));
+    else settings.width = clampSide(settings.height * double(camera.aspectRatio));
+}
+
 render::View prepareView(scene::SceneDocument& document, const FrameOptions& options,
                          const render::FrameSettings& settings, int* added, bool hasEnvironment, const AnimationChoice& animation)
 {

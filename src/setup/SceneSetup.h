@@ -103,6 +103,14 @@ std::optional<render::PlacedLight> extractEnvironmentSun(render::EnvironmentMap&
 render::BakeSettings resolveBakeSettings(const FrameOptions& options);
 std::filesystem::path cacheDirectory(const FrameOptions& options);
 
+/// The image size for the scene camera the frame is seen through (`options.camera`, or the
+/// first camera where none is chosen and the scene has one): a perspective camera's
+/// aspectRatio (glTF's, or a scene file's) gives the width for the height when neither the
+/// command line nor the scene file gives a size (the height then 720), the height for a width
+/// given alone, and the width for a height given alone; a size given whole, or a camera without
+/// an aspect ratio, leaves `settings` as they are. The result is held to the size limits.
+void fitSizeToCamera(render::FrameSettings& settings, const scene::SceneDocument& document, const FrameOptions& options);
+
 /// The view for the frame; adds the default light rig to `document` when it has no lights,
 /// no environment, and the user did not forbid it. Returns the number of default lights added via `added`.
 /// A scene camera is where `animation` puts it (its node, and KHR_animation_pointer's properties).

@@ -201,3 +201,27 @@ TEST(CliRender, SeveralScenesAndCamerasInOneProcess)
     // Only render takes --camera all.
     EXPECT_NE(runCli("bench --camera all --frames 1").exitCode, 0);
 }
+
+// A camera's aspectRatio (glTF's, or a scene file's) sizes the image where no size is given
+// whole: the height 720 (or the one given) and the width to match, or the height for a width
+// given alone; a size given whole wins. The image sized so is the one that size asked for
+// byte for byte. Broken on purpose (2026-12-07): without fitSizeToCamera the sizes were 1280x720,
+// 1280x60 and 90x720.
+TEST(CliRender, CameraAspectRatioSizesTheImage)
+{
+    const std::string dir = tempDir("aspect");
+    const std::string scene = dir + "/camera.json";
+    std::ofstream(scene) << R"({"camera": {"position": [0, 1, 6], "target": [0, 0, 0], "aspectRatio": 1.5},
+        "shapes": [{"type": "sphere", "radius": 1}]})";
+    const auto size = [&](const std::string& options, const std::string& name) {
+        const auto run = runCli("render " + scene + " --msaa 1 --env-color 0.5,0.5,0.5 " + options + " -o " + dir + "/" + name);
+        EXPECT_EQ(run.exitCode, 0) << run.err;
+        const specula::ImageRGBA8 image = specula::readPng(dir + "/" + name);
+        return std::pair(image.width, image.height);
+    };
+    EXPECT_EQ(size("", "default.png"), std::pair(1080, 720));
+    EXPECT_EQ(size("--height 60", "height.png"), std::pair(90, 60));
+    EXPECT_EQ(size("--width 90", "width.png"), std::pair(90, 60));
+    EXPECT_EQ(size("--width 64 --height 64", "both.png"), std::pair(64, 64));
+    EXPECT_TRUE(specula::readPng(dir + "/height.png").pixels == specula::readPng(dir + "/width.png").pixels);
+}
