@@ -315,6 +315,32 @@ TEST_F(GlTest, TransparencyVolumeAttenuatesByBeerLambert)
     }
 }
 
+namespace {
+
+/// transmission_quad.gltf seen from frontView(): where pixel (x, y) meets the quad, clear of its
+/// edges and the texel seam, and which texel (0 left, 1 right) it shows; and what it transmits
+/// of a uniform backdrop L there, T (1 − F(n·v)) c^(t/d) L (Schlick, F0 0.04), with each texel's
+/// factor T and thickness t.
+struct QuadVolume {
+    double transmission[2], thickness[2];
+    dvec3 c;
+    double d;
+};
+std::optional<std::pair<dvec3, int>> quadTexel(const render::View& view, int x, int y)
+{
+    const auto hit = hitQuad(pixelRay(view, x, y, kSize, kSize), glm::dmat4(facingZ(glm::mat4(1.0f))), 0.97);
+    if (!hit || std::abs(hit->x) < 0.03) return std::nullopt;
+    return std::pair(*hit, hit->x < 0.0 ? 0 : 1);
+}
+dvec3 transmittedThroughQuad(const dvec3& hit, int texel, const QuadVolume& v, const dvec3& L)
+{
+    const double NoV = glm::normalize(dvec3(0.0, 0.0, 4.0) - hit).z;
+    const double F = 0.04 + 0.96 * std::pow(1.0 - NoV, 5.0);
+    return v.transmission[texel] * (1.0 - F) * glm::pow(v.c, dvec3(v.thickness[texel] / v.d)) * L;
+}
+
+} // namespace
+
 // tests/assets/gltf/transmission_quad.gltf (make_transmission.py): the transmission factor 0.9 x
 // transmissionTexture's R (128 on the left half, 255 on the right) and the volume's thickness
 // 0.5 x thicknessTexture's G (255 left, 64 right, through texCoord 1 and KHR_texture_transform),
@@ -332,19 +358,16 @@ TEST_F(GlTest, TransparencyTransmissionAndThicknessTexturesFromGltf)
     addBackdrop(s, glm::vec3(L), false);
     const render::View view = frontView();
     const ImageFloat image = renderScene(s, view, exactSettings());
-    const double transmission[2] = {0.9 * 128.0 / 255.0, 0.9}, thickness[2] = {0.5, 0.5 * 64.0 / 255.0};
-    const glm::dvec3 eye(0.0, 0.0, 4.0);
+    const QuadVolume volume{{0.9 * 128.0 / 255.0, 0.9}, {0.5, 0.5 * 64.0 / 255.0}, c, d};
     int tested = 0;
     double textureMatters = 0.0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
-            const auto hit = hitQuad(pixelRay(view, x, y, kSize, kSize), glm::dmat4(facingZ(glm::mat4(1.0f))), 0.97);
-            if (!hit || std::abs(hit->x) < 0.03) continue; // the edges and the texel seam
-            const int texel = hit->x < 0.0 ? 0 : 1;
-            const double NoV = glm::normalize(eye - *hit).z;
-            const double F = 0.04 + 0.96 * std::pow(1.0 - NoV, 5.0);
-            const auto through = [&](int t) { return transmission[t] * (1.0 - F) * glm::pow(c, dvec3(thickness[t] / d)) * L; };
-            const dvec3 want = through(texel), swapped = through(1 - texel), got = pixel(image, x, y);
+            const auto texelHit = quadTexel(view, x, y);
+            if (!texelHit) continue;
+            const auto& [hit, texel] = *texelHit;
+            const dvec3 want = transmittedThroughQuad(hit, texel, volume, L);
+            const dvec3 swapped = transmittedThroughQuad(hit, 1 - texel, volume, L), got = pixel(image, x, y);
             ++tested;
             for (int ch = 0; ch < 3; ++ch) {
                 const double tolerance = kTransmissionRelative * want[ch] + kAbsolute;
@@ -397,7 +420,6 @@ TEST_F(GlTest, TransparencyAnimatedTransmissionAndVolume)
     renderer.setScene(s);
     render::GpuScene gpu(s); // the lists and the shadow rule, posed alongside
     std::vector<render::DrawProgram> programs(size_t(gpu.materialCount()));
-    const glm::dvec3 eye(0.0, 0.0, 4.0);
     for (const double t : {0.25, 0.75, -1.0, 0.0}) {
         const bool rest = t < 0.0;
         renderer.setPose(rest ? -1 : 0, float(std::max(t, 0.0)));
@@ -408,16 +430,13 @@ TEST_F(GlTest, TransparencyAnimatedTransmissionAndVolume)
         const double factor = rest ? 0.9 : 0.9 * u, thick = rest ? 0.5 : 0.5 - 0.25 * u;
         const double d = rest || t < 0.5 ? 0.25 : 0.5;
         const dvec3 c = rest ? dvec3(0.9, 0.5, 0.2) : glm::mix(dvec3(0.9, 0.5, 0.2), dvec3(0.5, 0.9, 0.9), u);
-        const double transmission[2] = {factor * 128.0 / 255.0, factor}, thickness[2] = {thick, thick * 64.0 / 255.0};
+        const QuadVolume volume{{factor * 128.0 / 255.0, factor}, {thick, thick * 64.0 / 255.0}, c, d};
         int tested = 0, failures = 0;
         for (int y = 0; y < kSize; ++y)
             for (int x = 0; x < kSize; ++x) {
-                const auto hit = hitQuad(pixelRay(view, x, y, kSize, kSize), glm::dmat4(facingZ(glm::mat4(1.0f))), 0.97);
-                if (!hit || std::abs(hit->x) < 0.03) continue; // the edges and the texel seam
-                const int texel = hit->x < 0.0 ? 0 : 1;
-                const double NoV = glm::normalize(eye - *hit).z;
-                const double F = 0.04 + 0.96 * std::pow(1.0 - NoV, 5.0);
-                const dvec3 want = transmission[texel] * (1.0 - F) * glm::pow(c, dvec3(thickness[texel] / d)) * L;
+                const auto texelHit = quadTexel(view, x, y);
+                if (!texelHit) continue;
+                const dvec3 want = transmittedThroughQuad(texelHit->first, texelHit->second, volume, L);
                 const dvec3 got = pixel(image, x, y);
                 ++tested;
                 for (int ch = 0; ch < 3; ++ch)
