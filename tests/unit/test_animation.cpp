@@ -553,7 +553,9 @@ TEST(GltfAnimation, AnimationPointerTransmissionAndVolumeTargets)
         {"/materials/0/normalTexture/scale", AnimatedField::NormalScale},
         {"/materials/0/occlusionTexture/strength", AnimatedField::OcclusionStrength},
     };
-    for (const auto& [path, field] : scalars) {
+    for (const auto& scalar : scalars) {
+        const char* path = scalar.first; // named, not a structured binding: clang 15 cannot capture those
+        const AnimatedField field = scalar.second;
         const Scene s = loadEditedPointers([&](nlohmann::json& d) { d[pointer(5)] = path; });
         EXPECT_TRUE(s.warnings.empty()) << path;
         ASSERT_EQ(s.animations[0].channels.size(), 8u) << path;
