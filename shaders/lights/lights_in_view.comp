@@ -1,6 +1,6 @@
 #version 450 core
 // Light culling, step 1 of 3 (render/passes/LightCullPass): the point and spot lights that
-// touch the view's frustum, as view-space CullLights in light order, and the directional
+// give light (shared/ClusterData.h, lightIsDark) and touch the view's frustum, as view-space CullLights in light order, and the directional
 // lights' indices (every cluster's, listed once at the start of the index list). One work
 // group: each invocation takes a run of lights, counts, a scan of the counts gives each run
 // its place, and the runs are written in order, so the result does not depend on scheduling.
@@ -58,7 +58,7 @@ void main()
         GpuLight light = lightAt(i);
         bool dir = isDirectional(light);
         directional += dir ? 1u : 0u;
-        visible += !dir && inFrustum(toCullLight(light, i).sphere) ? 1u : 0u;
+        visible += !dir && !lightIsDark(light.colorIntensity) && inFrustum(toCullLight(light, i).sphere) ? 1u : 0u;
     }
     sVisible[t] = visible;
     sDirectional[t] = directional;
@@ -83,7 +83,7 @@ void main()
         if (isDirectional(light)) {
             clusters.words[uBase + d] = i;
             ++d;
-        } else {
+        } else if (!lightIsDark(light.colorIntensity)) {
             CullLight c = toCullLight(light, i);
             if (inFrustum(c.sphere)) {
                 cullLights[v] = c;

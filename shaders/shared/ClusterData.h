@@ -93,6 +93,15 @@ SPECULA_FUNCTION bool coneTouchesSphere(vec3 apex, vec3 axis, float range, float
     return !(outsideAngle || beyondRange || behindApex);
 }
 
+// Whether a light gives no light (its colour × intensity, shared/LightData.h's colorIntensity,
+// is zero: a zero intensity, a black colour, or a hidden node's light, which render/LightBuffer
+// packs with intensity 0). Such a point or spot light is in no cluster's list and not counted
+// in view; directional lights are listed whatever their intensity (the frame's uniforms count them).
+SPECULA_FUNCTION bool lightIsDark(vec4 colorIntensity)
+{
+    return colorIntensity.w == 0.0f || (colorIntensity.x == 0.0f && colorIntensity.y == 0.0f && colorIntensity.z == 0.0f);
+}
+
 // Whether light `l` can reach any point of cluster `b`: its range sphere touches the box and,
 // for a spot light, its cone touches the box's bounding sphere.
 SPECULA_FUNCTION bool lightTouchesCluster(CullLight l, ClusterBounds b)

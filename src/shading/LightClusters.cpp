@@ -174,6 +174,7 @@ ClusterLists cullLights(const ClusterGrid& grid, const std::vector<shared::Clust
             out.directional.push_back(uint32_t(i));
             continue;
         }
+        if (shared::lightIsDark(lights[i].colorIntensity)) continue;
         const shared::CullLight c = cullLight(lights[i], view, uint32_t(i));
         if (sphereInFrustum(planes, c.sphere)) visible.push_back(c);
     }

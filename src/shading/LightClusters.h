@@ -65,13 +65,14 @@ float effectiveRange(float range, float cutoff);
 struct ClusterLists {
     std::vector<uint32_t> directional;           ///< every directional light, in order
     std::vector<std::vector<uint32_t>> clusters; ///< per cluster, light indices ascending
-    uint32_t visible = 0;                        ///< point and spot lights in the frustum
+    uint32_t visible = 0;                        ///< point and spot lights that give light, in the frustum
     size_t entries() const;
     size_t longest() const;
 };
 
-/// The CPU twin of the GPU culling: every point and spot light in the frustum tested against
-/// every cluster with shared::lightTouchesCluster, directional lights apart.
+/// The CPU twin of the GPU culling: every point and spot light that gives light
+/// (shared::lightIsDark) and is in the frustum tested against every cluster with
+/// shared::lightTouchesCluster, directional lights apart.
 ClusterLists cullLights(const ClusterGrid& grid, const std::vector<shared::ClusterBounds>& bounds, const glm::mat4& view,
                         const glm::mat4& projection, const std::vector<shared::GpuLight>& lights);
 

@@ -5,6 +5,7 @@
 #include "GlTestContext.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -318,6 +319,82 @@ TEST_F(GlTest, ClusterListsMatchTheCpuTwin)
         EXPECT_LT(entries, size_t(grid.count()) * expected.visible / 4);
         EXPECT_GT(entries, 0u);
     }
+}
+
+// A light that gives no light — intensity 0, a black colour, or a hidden node's light (packed
+// with intensity 0) — is in no list and not counted in view: the lists are those of the same
+// lights all lit, less the dark ones, and the frame still equals brute force.
+TEST_F(GlTest, DarkAndHiddenLightsAreInNoList)
+{
+    const int width = 333, height = 197;
+    const render::View view = testView(float(width) / float(height));
+    const std::vector<render::PlacedLight> lit = randomLights(13, 600);
+    std::vector<render::PlacedLight> dark = lit;
+    std::vector<bool> isDark(lit.size(), false);
+    for (size_t i = 0; i < dark.size(); ++i) {
+        if (dark[i].light.type == scene::Light::Type::Directional || i % 3 != 0) continue;
+        isDark[i] = true;
+        if (i % 9 == 0) dark[i].light.intensity = 0.0f;
+        else if (i % 9 == 3) dark[i].light.color = glm::vec3(0.0f);
+        else dark[i].visible = false;
+    }
+    CullRun litRun, darkRun;
+    litRun.run(lit, view, width, height);
+    darkRun.run(dark, view, width, height);
+    const std::vector<uint32_t> litWords = litRun.pass.readWords(), darkWords = darkRun.pass.readWords();
+    const int clusters = litRun.pass.grid().count();
+    ASSERT_EQ(darkWords[SPECULA_CLUSTER_WORD_DIRECTIONAL], litWords[SPECULA_CLUSTER_WORD_DIRECTIONAL]);
+    size_t darkListed = 0, entries = 0;
+    int differing = 0, firstDiffering = -1;
+    for (int k = 0; k < clusters; ++k) {
+        const auto list = [k](const std::vector<uint32_t>& words) {
+            const uint32_t first = words[size_t(SPECULA_CLUSTER_HEADER_WORDS + 2 * k)];
+            const uint32_t count = words[size_t(SPECULA_CLUSTER_HEADER_WORDS + 2 * k + 1)];
+            return std::vector<uint32_t>(words.begin() + first, words.begin() + first + count);
+        };
+        std::vector<uint32_t> want;
+        for (const uint32_t i : list(litWords)) {
+            if (isDark[i]) ++darkListed;
+            else want.push_back(i);
+        }
+        const std::vector<uint32_t> got = list(darkWords);
+        entries += got.size();
+        if (got == want) continue;
+        if (differing++ == 0) firstDiffering = k;
+    }
+    EXPECT_EQ(differing, 0) << "clusters whose list is not the lit one's less the dark lights, the first " << firstDiffering;
+    EXPECT_GT(darkListed, 1000u) << "the dark lights must reach clusters when lit, or the test shows nothing";
+    EXPECT_EQ(darkWords[SPECULA_CLUSTER_WORD_ENTRIES], entries);
+
+    // In view: the lit run's count less the dark lights in the frustum (the CPU's sphere test).
+    const std::array<glm::vec4, 6> planes = render::viewFrustumPlanes(view.projection);
+    int darkInView = 0;
+    for (size_t i = 0; i < lit.size(); ++i) {
+        if (!isDark[i]) continue;
+        const shared::GpuLight packed = render::LightBuffer::pack(lit[i], -1, litRun.stores.lights.cutoff());
+        if (render::sphereInFrustum(planes, render::cullLight(packed, view.view, uint32_t(i)).sphere)) ++darkInView;
+    }
+    EXPECT_GT(darkInView, 50);
+    EXPECT_NEAR(double(darkWords[SPECULA_CLUSTER_WORD_VISIBLE]), double(litWords[SPECULA_CLUSTER_WORD_VISIBLE]) - darkInView, 2.0);
+
+    // The CPU twin agrees, and the frame is brute force's.
+    std::vector<shared::GpuLight> packed;
+    for (const render::PlacedLight& p : dark) packed.push_back(render::LightBuffer::pack(p, -1, darkRun.stores.lights.cutoff()));
+    const render::ClusterLists twin = render::cullLights(darkRun.pass.grid(), darkRun.pass.bounds(), view.view, view.projection, packed);
+    EXPECT_NEAR(double(twin.visible), double(darkWords[SPECULA_CLUSTER_WORD_VISIBLE]), 2.0);
+    for (int k = 0; k < clusters; ++k)
+        for (const uint32_t i : twin.clusters[size_t(k)]) EXPECT_FALSE(isDark[i]) << "the CPU twin lists dark light " << i;
+
+    render::Renderer renderer;
+    renderer.setScene(testScene());
+    renderer.setLights(dark);
+    const render::FrameSettings settings = frameSettings(160, 90);
+    const render::View small = testView(160.0f / 90.0f);
+    const ImageFloat brute = renderWith(renderer, small, settings, render::LightCulling::None);
+    const ImageFloat clustered = renderWith(renderer, small, settings, render::LightCulling::Clustered);
+    const Comparison c = compare(clustered, brute);
+    EXPECT_EQ(c.differing, 0) << c.maxRelative;
+    EXPECT_GT(c.lit, 0);
 }
 
 // The lists are made again only when a light, the view or the grid changes: a still frame
