@@ -426,35 +426,36 @@ GpuScene::GpuScene(const scene::Scene& scene)
             mPrimitives.push_back(upload(p, scene.meshes[meshIndex].name));
         }
     }
+    // A record drawn with a change its material does not make: one copy per material and kind
+    // of change (`copies`), the change applied to the copy's GPU record and its binding.
+    auto recordCopy = [&](std::map<int, int>& copies, int material, auto change) {
+        const auto [found, added] = copies.try_emplace(material, int(gpuMaterials.size()));
+        if (!added) return found->second;
+        gpuMaterials.push_back(gpuMaterials[size_t(material)]);
+        mMaterials.push_back(mMaterials[size_t(material)]);
+        mRecordMaterial.push_back(mRecordMaterial[size_t(material)]);
+        change(gpuMaterials.back(), mMaterials.back());
+        return found->second;
+    };
     // Vertex colours multiply base colour (glTF COLOR_0); the flag lives on the material,
-    // so primitives with colours draw with a copy of their material's record (one per material).
+    // so primitives with colours draw with a copy of their material's record.
     std::map<int, int> colourCopies;
     auto colourCopy = [&](int material) {
-        const auto [found, added] = colourCopies.try_emplace(material, int(gpuMaterials.size()));
-        if (!added) return found->second;
-        shared::GpuMaterial copy = gpuMaterials[size_t(material)];
-        copy.flags.x |= SPECULA_MATERIAL_USE_VERTEX_COLOR;
-        gpuMaterials.push_back(copy);
-        mMaterials.push_back(mMaterials[size_t(material)]);
-        // The copy's record flags; the shading choice and the texture bits above them stay.
-        constexpr uint64_t kRecordFlags = 0xffffffffu & ~uint64_t(kShadingFeatureMask);
-        mMaterials.back().features = copy.flags.x | (mMaterials[size_t(material)].features & ~kRecordFlags);
-        mRecordMaterial.push_back(mRecordMaterial[size_t(material)]);
-        return found->second;
+        return recordCopy(colourCopies, material, [](shared::GpuMaterial& record, MaterialBinding& binding) {
+            record.flags.x |= SPECULA_MATERIAL_USE_VERTEX_COLOR;
+            // The copy's record flags; the shading choice and the texture bits above them stay.
+            constexpr uint64_t kRecordFlags = 0xffffffffu & ~uint64_t(kShadingFeatureMask);
+            binding.features = record.flags.x | (binding.features & ~kRecordFlags);
+        });
     };
     // Lines and points without normals draw unlit (scene::Primitive::unlit): a copy of their
     // material's record (or of its colour copy) with the unlit model.
     std::map<int, int> unlitCopies;
     auto unlitCopy = [&](int material) {
-        const auto [found, added] = unlitCopies.try_emplace(material, int(gpuMaterials.size()));
-        if (!added) return found->second;
-        gpuMaterials.push_back(gpuMaterials[size_t(material)]);
-        mMaterials.push_back(mMaterials[size_t(material)]);
-        uint64_t& features = mMaterials.back().features;
-        features = (features & ~uint64_t(kShadingFeatureMask)) | packShading({.model = scene::ShadingModel::Unlit});
-        mMaterials.back().unlitCopy = true;
-        mRecordMaterial.push_back(mRecordMaterial[size_t(material)]);
-        return found->second;
+        return recordCopy(unlitCopies, material, [](shared::GpuMaterial&, MaterialBinding& binding) {
+            binding.features = (binding.features & ~uint64_t(kShadingFeatureMask)) | packShading({.model = scene::ShadingModel::Unlit});
+            binding.unlitCopy = true;
+        });
     };
     for (size_t meshIndex = 0, primitiveIndex = 0; meshIndex < scene.meshes.size(); ++meshIndex) {
         for (const scene::Primitive& p : scene.meshes[meshIndex].primitives) {
