@@ -514,7 +514,7 @@ GpuScene::GpuScene(const scene::Scene& scene)
         mRig->lights = scene.lights;
     }
     // Hidden nodes' meshes (KHR_node_visibility) are kept where an animation may show them.
-    const scene::HiddenNodes hidden = mRig ? scene::HiddenNodes::Include : scene::HiddenNodes::Skip;
+    const scene::HiddenNodes hidden = scene.hiddenNodesToKeep(); // Include only with animations, so with mRig
     for (const scene::MeshInstance& instance : scene.meshInstances(hidden)) {
         const auto& sourcePrimitives = scene.meshes[size_t(instance.mesh)].primitives;
         for (size_t k = 0, drawn = 0; k < sourcePrimitives.size(); ++k) {

@@ -223,8 +223,7 @@ void Renderer::setScene(const scene::Scene& scene)
     mImpl->stores.scene = std::make_unique<GpuScene>(scene);
     ++mImpl->stores.casterVersion;
     mImpl->passes.billboards.setScene(scene);
-    // Hidden lights (KHR_node_visibility) are kept where an animation may show them.
-    const scene::HiddenNodes hidden = scene.animations.empty() ? scene::HiddenNodes::Skip : scene::HiddenNodes::Include;
+    const scene::HiddenNodes hidden = scene.hiddenNodesToKeep(); // as GpuScene keeps their draws
     mImpl->stores.lights.setAll(placeLights(scene, hidden));
     mImpl->lightNodes.clear();
     mImpl->lightIndices.clear();

@@ -416,6 +416,9 @@ struct Scene {
     std::vector<MeshInstance> meshInstances(HiddenNodes hidden = HiddenNodes::Skip) const;
     std::vector<CameraInstance> cameraInstances() const;
     std::vector<LightInstance> lightInstances(HiddenNodes hidden = HiddenNodes::Skip) const;
+    /// What a renderer keeps of hidden nodes: Include where an animation may show them (the
+    /// scene has animations), else Skip.
+    HiddenNodes hiddenNodesToKeep() const { return animations.empty() ? HiddenNodes::Skip : HiddenNodes::Include; }
     Bounds worldBounds() const;
     size_t triangleCount() const;
 };

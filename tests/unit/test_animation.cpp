@@ -517,6 +517,11 @@ TEST(GltfAnimation, AnimationPointerSurfaceAndVisibilityTargets)
     ASSERT_EQ(s.lightInstances().size(), 1u); // the sun
     ASSERT_EQ(s.lightInstances(HiddenNodes::Include).size(), 2u);
     EXPECT_FALSE(s.lightInstances(HiddenNodes::Include)[0].visible); // the bulb, under the group
+    // A renderer keeps hidden nodes only where an animation may show them.
+    EXPECT_EQ(s.hiddenNodesToKeep(), HiddenNodes::Include);
+    Scene still = s;
+    still.animations.clear();
+    EXPECT_EQ(still.hiddenNodesToKeep(), HiddenNodes::Skip);
 
     for (const float t : {0.25f, 0.75f}) {
         const Pose pose = poseAt(s, 0, t);
