@@ -14,6 +14,7 @@
 // SkinnedBarShadowMovesWithThePose (the bent pose shows the straight bar's shadow). The
 // shadow probes are coarse: with the inverse bind matrix skipped they still pass.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 
 #include <algorithm>
@@ -34,10 +35,7 @@ const std::string kAssets = std::string(SPECULA_SOURCE_DIR) + "/tests/assets/glt
 
 render::FrameSettings maskSettings()
 {
-    render::FrameSettings s;
-    s.width = s.height = kSize;
-    s.msaa = 1; // one sample at the pixel centre, as the CPU rasteriser below
-    s.tonemap = render::Tonemap::None;
+    render::FrameSettings s = test::radianceFrame(kSize, kSize);
     s.debugView = DebugView::BaseColor; // base colour where a surface is, 0 elsewhere
     return s;
 }

@@ -6,6 +6,7 @@
 // intensity (LINEAR) and colour (STEP) are animated. The rest pose (no animation) must give the
 // file's own values back after an animation has set them.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 #include "GltfBrdfTerms.h"
 
@@ -58,11 +59,7 @@ TEST_F(GlTest, AnimationPointerDrivesMaterialsTexturesNodesAndLights)
     ASSERT_EQ(s.animations.size(), 1u);
     render::Renderer renderer;
     renderer.setScene(s);
-    render::FrameSettings settings;
-    settings.width = kWidth;
-    settings.height = kHeight;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
+    render::FrameSettings settings = test::radianceFrame(kWidth, kHeight);
     settings.environment.skybox = false;
     const glm::vec3 eye(0.0f, 0.2f, 5.0f);
     const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(45.0f), 2.0f, 0.1f, 20.0f);
@@ -174,11 +171,7 @@ TEST_F(GlTest, AnimationPointerDrivesSurfaceMapsCutoffAndVisibility)
     renderer.setScene(s);
     ASSERT_EQ(renderer.lightCount(), 2); // the hidden bulb is kept for the animation that shows it
     constexpr int kW = 512, kH = 128;
-    render::FrameSettings settings;
-    settings.width = kW;
-    settings.height = kH;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
+    render::FrameSettings settings = test::radianceFrame(kW, kH);
     settings.environment.skybox = false;
     settings.ambient = glm::vec3(0.5f);
     const render::View view = render::lookAtView({0.0f, 0.0f, 7.0f}, {0, 0, 0}, {0, 1, 0}, glm::radians(20.0f), 4.0f, 0.1f, 20.0f);

@@ -7,6 +7,8 @@
 // against a converged Monte Carlo reference (IblReference.h) in both specular modes; the white
 // furnace with the multiple-scattering compensation; the anisotropy debug view.
 #include "GlTestContext.h"
+#include "LitSphere.h"
+#include "RadianceFrame.h"
 #include "IblReference.h"
 #include "ImageProbe.h"
 #include "GltfBrdfTerms.h"
@@ -96,25 +98,6 @@ dvec3 sphereDirection(const dvec3& n, double rotation)
 constexpr double kRelative = 0.015;
 constexpr double kAbsolute = 2e-3;
 
-render::FrameSettings frameSettings(int size)
-{
-    render::FrameSettings settings;
-    settings.width = settings.height = size;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
-    settings.energyCompensation = false; // exactly the extension's BRDF
-    return settings;
-}
-
-scene::Light pointLight(float intensity)
-{
-    scene::Light light;
-    light.type = scene::Light::Type::Point;
-    light.intensity = intensity;
-    light.color = {1.0f, 0.9f, 0.8f};
-    return light;
-}
-
 struct Comparison {
     int tested = 0;
     int anisotropyMatters = 0; ///< pixels where the isotropic lobe is beyond 3 tolerances
@@ -131,46 +114,33 @@ Comparison compareSphere(const char* name, const Brushed& m, double rotation, co
     material.anisotropyStrength = float(m.strength);
     material.anisotropyRotation = float(rotation);
     scene::addShape(s, scene::makeUvSphere(1.0f, 256, 128), material, glm::mat4(1.0f), "sphere");
-    const scene::Light light = pointLight(intensity);
+    const scene::Light light = test::pointLight(intensity);
     scene::addLight(s, light, lightPosition, -lightPosition);
 
-    const glm::vec3 eye(0.0f, 0.0f, 4.0f);
-    const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
-    render::Renderer renderer;
-    renderer.setScene(s);
-    renderer.render(view, frameSettings(96));
-    const ImageFloat image = renderer.readRadiance();
+    const ImageFloat image = test::renderSphere(s, test::radianceFrame(96, 96, test::Brdf::Exact));
 
-    const glm::dmat4 inverse = test::inverseViewProjection(view);
     Brushed isotropic = m;
     isotropic.strength = 0.0;
     Comparison result;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            dvec3 p;
-            if (!hitUnitSphere(pixelRay(inverse, x, y, image.width, image.height), p)) continue;
-            const dvec3 n = glm::normalize(p);
-            const dvec3 v = glm::normalize(dvec3(eye) - p);
-            if (glm::dot(n, v) < 0.25) continue; // silhouette pixels straddle facets and background
-            if (std::abs(n.y) > 0.95) continue; // the poles, where the tangent turns within a pixel
-            const dvec3 toLight = dvec3(lightPosition) - p;
-            const double distance = glm::length(toLight);
-            const dvec3 l = toLight / distance;
-            const dvec3 E = dvec3(light.color) * (double(light.intensity) / (distance * distance));
-            const dvec3 t = sphereDirection(n, rotation);
-            const dvec3 expected = brushedRadiance(m, n, t, v, l) * E;
-            const dvec3 iso = brushedRadiance(isotropic, n, t, v, l) * E;
-            ++result.tested;
-            if (std::abs(iso.y - expected.y) > 3.0 * (kRelative * expected.y + kAbsolute)) ++result.anisotropyMatters;
-            for (int ch = 0; ch < 3; ++ch) {
-                const double got = image.pixels[(size_t(y) * image.width + x) * 4 + ch];
-                const double error = std::abs(got - expected[ch]);
-                EXPECT_LE(error, kRelative * expected[ch] + kAbsolute)
-                    << name << " pixel (" << x << ", " << y << ") channel " << ch << ": GPU " << got << " CPU " << expected[ch]
-                    << " (isotropic " << iso[ch] << ")";
-                if (expected[ch] > 0.05) result.maxRelativeError = std::max(result.maxRelativeError, error / expected[ch]);
-            }
+    for (const test::SpherePixel& px : test::spherePixels(image)) {
+        const dvec3 n = px.n, v = px.v;
+        if (std::abs(n.y) > 0.95) continue; // the poles, where the tangent turns within a pixel
+        const test::PointLightAt lit = test::pointLightAt(light, lightPosition, px.p);
+        const dvec3 l = lit.l, E = lit.E;
+        const dvec3 t = sphereDirection(n, rotation);
+        const dvec3 expected = brushedRadiance(m, n, t, v, l) * E;
+        const dvec3 iso = brushedRadiance(isotropic, n, t, v, l) * E;
+        ++result.tested;
+        if (std::abs(iso.y - expected.y) > 3.0 * (kRelative * expected.y + kAbsolute)) ++result.anisotropyMatters;
+        for (int ch = 0; ch < 3; ++ch) {
+            const double got = px.got[ch];
+            const double error = std::abs(got - expected[ch]);
+            EXPECT_LE(error, kRelative * expected[ch] + kAbsolute)
+                << name << " pixel (" << px.x << ", " << px.y << ") channel " << ch << ": GPU " << got << " CPU " << expected[ch]
+                << " (isotropic " << iso[ch] << ")";
+            if (expected[ch] > 0.05) result.maxRelativeError = std::max(result.maxRelativeError, error / expected[ch]);
         }
+    }
     std::printf("anisotropy, %s: %d pixels (%d where it matters), worst relative error %.3f%%\n", name, result.tested,
                 result.anisotropyMatters, 100.0 * result.maxRelativeError);
     return result;
@@ -209,14 +179,14 @@ TEST_F(GlTest, AnisotropyTextureFromGltf)
     const scene::Image& texture = s.images[0];
     ASSERT_EQ(texture.width, 8);
     const glm::vec3 lightPosition(-0.5f, 0.4f, 1.2f);
-    const scene::Light light = pointLight(3.0f);
+    const scene::Light light = test::pointLight(3.0f);
     scene::addLight(s, light, lightPosition, -lightPosition);
     constexpr int kSize = 128;
     const glm::vec3 eye(0.0f, 0.0f, 3.0f);
     const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(45.0f), 1.0f, 0.1f, 20.0f);
     render::Renderer renderer;
     renderer.setScene(s);
-    renderer.render(view, frameSettings(kSize));
+    renderer.render(view, test::radianceFrame(kSize, kSize, test::Brdf::Exact));
     const ImageFloat image = renderer.readRadiance();
 
     const double rotation = 0.25;
@@ -239,10 +209,8 @@ TEST_F(GlTest, AnisotropyTextureFromGltf)
             const dvec3 t(turned, 0.0);
             const Brushed m{{0.9, 0.9, 0.92}, 1.0, 0.35, 0.9 * texel[2] / 255.0};
             const dvec3 v = glm::normalize(dvec3(eye) - p);
-            const dvec3 toLight = dvec3(lightPosition) - p;
-            const double distance = glm::length(toLight);
-            const dvec3 l = toLight / distance;
-            const dvec3 E = dvec3(light.color) * (double(light.intensity) / (distance * distance));
+            const test::PointLightAt lit = test::pointLightAt(light, lightPosition, p);
+            const dvec3 l = lit.l, E = lit.E;
             const dvec3 expected = brushedRadiance(m, n, t, v, l) * E;
             Brushed full = m;
             full.strength = 0.9; // the texture's B ignored
@@ -276,7 +244,7 @@ TEST_F(GlTest, AnisotropyDebugViewShowsDirectionAndStrength)
     scene::addShape(s, scene::makeUvSphere(0.3f, 32, 16), plain, glm::translate(glm::mat4(1.0f), glm::vec3(1.6f, 0.0f, 0.0f)), "plain");
     render::Renderer renderer;
     renderer.setScene(s);
-    render::FrameSettings settings = frameSettings(64);
+    render::FrameSettings settings = test::radianceFrame(64, 64, test::Brdf::Exact);
     settings.debugView = DebugView::Anisotropy;
     const render::View view = render::lookAtView({0.0f, 0.0f, 4.0f}, {0, 0, 0}, {0, 1, 0}, glm::radians(60.0f), 1.0f, 0.1f, 20.0f);
     renderer.render(view, settings);

@@ -2,6 +2,7 @@
 // rectangle render::billboardMatrix predicts, from many cameras and for every kind; 10,000
 // instances take one draw call; cutout, blending order, HDR tint, pixel sizes and gizmos.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 
 #include <epoxy/gl.h>
 
@@ -59,16 +60,6 @@ scene::Scene oneBillboard(BillboardKind kind, glm::vec3 position, glm::vec2 size
     group.billboards.push_back({position, 1.0f, glm::vec3(1.0f), axis});
     s.billboards.push_back(group);
     return s;
-}
-
-render::FrameSettings settingsFor(int width, int height)
-{
-    render::FrameSettings settings;
-    settings.width = width;
-    settings.height = height;
-    settings.msaa = 1; // one sample at each pixel centre: coverage is exactly "centre inside"
-    settings.tonemap = render::Tonemap::None;
-    return settings;
 }
 
 PixelBox coveredPixels(const ImageFloat& image, float threshold = 0.5f)
@@ -147,7 +138,7 @@ TEST_F(GlTest, BillboardCoversTheRectanglePredictedOnTheCpu)
             // Look slightly past the billboard so it is not at the exact centre of the view.
             const render::View view = render::lookAtView(eye, position + glm::vec3(0.2f, -0.1f, 0.0f), {0, 1, 0},
                                                          glm::radians(40.0f), float(kWidth) / kHeight, 0.1f, 50.0f);
-            renderer.render(view, settingsFor(kWidth, kHeight));
+            renderer.render(view, test::radianceFrame(kWidth, kHeight));
             const ImageFloat image = renderer.readRadiance();
             const glm::mat4 basis = render::billboardMatrix(k.kind, position, eye, render::cameraUpFromView(view.view), axis);
             const PixelBox expected = predictedPixels(render::billboardCorners(basis, k.size, k.anchor), view, kWidth, kHeight);
@@ -175,7 +166,7 @@ TEST_F(GlTest, PixelSizedBillboardKeepsItsSizeOnScreen)
         renderer.setScene(s);
         const render::View view = render::lookAtView({0, 0, distance}, {0, 0, 0}, {0, 1, 0}, glm::radians(50.0f),
                                                      float(kWidth) / kHeight, 0.1f, 100.0f);
-        renderer.render(view, settingsFor(kWidth, kHeight));
+        renderer.render(view, test::radianceFrame(kWidth, kHeight));
         const PixelBox got = coveredPixels(renderer.readRadiance());
         EXPECT_NEAR(got.x1 - got.x0 + 1, 20, 1) << "distance " << distance;
         EXPECT_NEAR(got.y1 - got.y0 + 1, 12, 1) << "distance " << distance;
@@ -197,7 +188,7 @@ TEST_F(GlTest, TenThousandBillboardsInOneDrawCall)
         return s;
     };
     const render::View view = render::lookAtView({0, 0, 12}, {0, 0, 0}, {0, 1, 0}, glm::radians(45.0f), 1.0f, 0.1f, 50.0f);
-    const render::FrameSettings settings = settingsFor(400, 400);
+    const render::FrameSettings settings = test::radianceFrame(400, 400);
     render::Renderer renderer;
     for (scene::AlphaMode mode : {scene::AlphaMode::Mask, scene::AlphaMode::Blend}) {
         renderer.setScene(grid(0, mode));
@@ -218,7 +209,7 @@ TEST_F(GlTest, TenThousandBillboardsInOneDrawCall)
 TEST_F(GlTest, BillboardCutoutBlendingAndHdr)
 {
     const render::View view = render::lookAtView({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
-    const render::FrameSettings settings = settingsFor(64, 64);
+    const render::FrameSettings settings = test::radianceFrame(64, 64);
     render::Renderer renderer;
     auto disc = [](glm::vec3 position, glm::vec3 tint, scene::AlphaMode mode) {
         scene::BillboardGroup group;
@@ -287,7 +278,7 @@ TEST_F(GlTest, DegenerateViewsRenderFinite)
     for (BillboardKind kind : {BillboardKind::PointSprite, BillboardKind::AxisAligned, BillboardKind::ArbitraryAxis}) {
         renderer.setScene(oneBillboard(kind, {0, 0, 0}, {1.0f, 1.0f}, {0.5f, 0.5f}, {0, 1, 0}));
         const render::View view = render::lookAtView({0, 5, 0}, {0, 0, 0}, {0, 0, -1}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
-        renderer.render(view, settingsFor(32, 32));
+        renderer.render(view, test::radianceFrame(32, 32));
         const ImageFloat image = renderer.readRadiance();
         for (float v : image.pixels) ASSERT_TRUE(std::isfinite(v)) << "kind " << int(kind);
         // A point sprite faces the camera even from above; the others are edge-on and vanish.
@@ -314,7 +305,7 @@ TEST_F(GlTest, LightGizmosAreDiscsOfTheLightColour)
                     glm::rotate(glm::translate(glm::mat4(1.0f), {0, 0, 1}), glm::radians(90.0f), glm::vec3(1, 0, 0)));
 
     const render::View view = render::lookAtView({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
-    render::FrameSettings settings = settingsFor(128, 128);
+    render::FrameSettings settings = test::radianceFrame(128, 128);
     settings.shadows.enabled = false; // counts draw calls: the gizmos' alone
     render::Renderer renderer;
     renderer.setScene(s);
@@ -438,7 +429,7 @@ TEST_F(GlTest, LightGizmoRodsShowDirectionAndCone)
     // From afar with a narrow field: little perspective, so the cone seen from the side is close
     // to the triangle an orthographic view would show.
     const render::View view = render::lookAtView({0, 0, 8}, {0, 0, 0}, {0, 1, 0}, glm::radians(22.0f), float(kW) / kH, 0.1f, 20.0f);
-    render::FrameSettings settings = settingsFor(kW, kH);
+    render::FrameSettings settings = test::radianceFrame(kW, kH);
     settings.gizmos = true;
     render::Renderer renderer;
     renderer.setScene(s);

@@ -5,6 +5,8 @@
 // Punctual light on spheres (factors) and on a glTF quad whose factor, roughness and normal
 // come from textures; the white furnace for the image-based path.
 #include "GlTestContext.h"
+#include "LitSphere.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 #include "GltfBrdfTerms.h"
 #include "SphereTiles.h"
@@ -102,25 +104,6 @@ double clearcoatAlbedo(double NoV, double perceptualRoughness)
 constexpr double kRelative = 0.015;
 constexpr double kAbsolute = 2e-3;
 
-render::FrameSettings frameSettings(int size)
-{
-    render::FrameSettings settings;
-    settings.width = settings.height = size;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
-    settings.energyCompensation = false; // exactly the glTF BRDF
-    return settings;
-}
-
-scene::Light pointLight(float intensity)
-{
-    scene::Light light;
-    light.type = scene::Light::Type::Point;
-    light.intensity = intensity;
-    light.color = {1.0f, 0.9f, 0.8f};
-    return light;
-}
-
 struct Comparison {
     int tested = 0;
     int coatDominated = 0; ///< pixels where the layer gives more than the base
@@ -138,43 +121,30 @@ Comparison compareSphere(const char* name, const Coated& c, const glm::vec3& lig
     material.clearcoatFactor = float(c.clearcoat);
     material.clearcoatRoughnessFactor = float(c.clearcoatRoughness);
     scene::addShape(s, scene::makeUvSphere(1.0f, 256, 128), material, glm::mat4(1.0f), "sphere");
-    const scene::Light light = pointLight(intensity);
+    const scene::Light light = test::pointLight(intensity);
     scene::addLight(s, light, lightPosition, -lightPosition);
 
-    const glm::vec3 eye(0.0f, 0.0f, 4.0f);
-    const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
-    render::Renderer renderer;
-    renderer.setScene(s);
-    renderer.render(view, frameSettings(96));
-    const ImageFloat image = renderer.readRadiance();
+    const ImageFloat image = test::renderSphere(s, test::radianceFrame(96, 96, test::Brdf::Exact));
 
-    const glm::dmat4 inverse = test::inverseViewProjection(view);
     Coated bare = c;
     bare.clearcoat = 0.0;
     Comparison result;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            dvec3 p;
-            if (!hitUnitSphere(pixelRay(inverse, x, y, image.width, image.height), p)) continue;
-            const dvec3 n = glm::normalize(p);
-            const dvec3 v = glm::normalize(dvec3(eye) - p);
-            if (glm::dot(n, v) < 0.25) continue; // silhouette pixels straddle facets and background
-            const dvec3 toLight = dvec3(lightPosition) - p;
-            const double distance = glm::length(toLight);
-            const dvec3 l = toLight / distance;
-            const dvec3 E = dvec3(light.color) * (double(light.intensity) / (distance * distance));
-            const dvec3 expected = coatedRadiance(c, n, n, v, l) * E;
-            ++result.tested;
-            if (glm::length(expected - coatedRadiance(bare, n, n, v, l) * E) > glm::length(coatedRadiance(bare, n, n, v, l) * E))
-                ++result.coatDominated;
-            for (int ch = 0; ch < 3; ++ch) {
-                const double got = image.pixels[(size_t(y) * image.width + x) * 4 + ch];
-                const double error = std::abs(got - expected[ch]);
-                EXPECT_LE(error, kRelative * expected[ch] + kAbsolute)
-                    << name << " pixel (" << x << ", " << y << ") channel " << ch << ": GPU " << got << " CPU " << expected[ch];
-                if (expected[ch] > 0.05) result.maxRelativeError = std::max(result.maxRelativeError, error / expected[ch]);
-            }
+    for (const test::SpherePixel& px : test::spherePixels(image)) {
+        const dvec3 n = px.n, v = px.v;
+        const test::PointLightAt lit = test::pointLightAt(light, lightPosition, px.p);
+        const dvec3 l = lit.l, E = lit.E;
+        const dvec3 expected = coatedRadiance(c, n, n, v, l) * E;
+        ++result.tested;
+        if (glm::length(expected - coatedRadiance(bare, n, n, v, l) * E) > glm::length(coatedRadiance(bare, n, n, v, l) * E))
+            ++result.coatDominated;
+        for (int ch = 0; ch < 3; ++ch) {
+            const double got = px.got[ch];
+            const double error = std::abs(got - expected[ch]);
+            EXPECT_LE(error, kRelative * expected[ch] + kAbsolute)
+                << name << " pixel (" << px.x << ", " << px.y << ") channel " << ch << ": GPU " << got << " CPU " << expected[ch];
+            if (expected[ch] > 0.05) result.maxRelativeError = std::max(result.maxRelativeError, error / expected[ch]);
         }
+    }
     std::printf("clearcoat, %s: %d pixels, worst relative error %.3f%%\n", name, result.tested, 100.0 * result.maxRelativeError);
     return result;
 }
@@ -200,14 +170,14 @@ TEST_F(GlTest, ClearcoatTexturesAndNormalMapFromGltf)
     scene::Scene s = scene::loadGltf(std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/clearcoat_quad.gltf");
     ASSERT_EQ(s.materials.size(), 1u);
     const glm::vec3 lightPosition(-0.6f, 0.3f, 1.5f);
-    const scene::Light light = pointLight(4.0f);
+    const scene::Light light = test::pointLight(4.0f);
     scene::addLight(s, light, lightPosition, -lightPosition);
     constexpr int kSize = 128;
     const glm::vec3 eye(0.0f, 0.0f, 3.0f);
     const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(45.0f), 1.0f, 0.1f, 20.0f);
     render::Renderer renderer;
     renderer.setScene(s);
-    renderer.render(view, frameSettings(kSize));
+    renderer.render(view, test::radianceFrame(kSize, kSize, test::Brdf::Exact));
     const ImageFloat image = renderer.readRadiance();
 
     Coated c{{0.8, 0.2, 0.1}, 0.0, 0.6, 1.0 * 204.0 / 255.0, 0.5 * 128.0 / 255.0};
@@ -225,10 +195,8 @@ TEST_F(GlTest, ClearcoatTexturesAndNormalMapFromGltf)
             const dvec3 p = ray.origin + ray.direction * (-ray.origin.z / ray.direction.z);
             if (std::abs(p.x) > 0.97 || std::abs(p.y) > 0.97) continue; // the quad's edge pixels
             const dvec3 v = glm::normalize(dvec3(eye) - p);
-            const dvec3 toLight = dvec3(lightPosition) - p;
-            const double distance = glm::length(toLight);
-            const dvec3 l = toLight / distance;
-            const dvec3 E = dvec3(light.color) * (double(light.intensity) / (distance * distance));
+            const test::PointLightAt lit = test::pointLightAt(light, lightPosition, p);
+            const dvec3 l = lit.l, E = lit.E;
             const dvec3 expected = coatedRadiance(c, n, nc, v, l) * E;
             const dvec3 untilted = coatedRadiance(c, n, n, v, l) * E;
             tiltMatters = std::max(tiltMatters, std::abs(untilted.x - expected.x) / (kRelative * expected.x + kAbsolute));
@@ -342,7 +310,7 @@ TEST_F(GlTest, ClearcoatDebugViewsShowTheLayersFactorRoughnessAndNormal)
             if (!coated) s.materials.at(0).clearcoatFactor = 0.0f;
             render::Renderer renderer;
             renderer.setScene(s);
-            render::FrameSettings settings = frameSettings(kSize);
+            render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
             settings.debugView = debugView;
             renderer.render(view, settings);
             const ImageFloat image = renderer.readRadiance();

@@ -3,6 +3,7 @@
 // lists against the CPU twin of the culling (shading/LightClusters), 0, 1 and 65,536 lights,
 // and the error the light cutoff makes.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 
 #include <algorithm>
 #include <array>
@@ -117,11 +118,7 @@ scene::Scene testScene()
 
 render::FrameSettings frameSettings(int width, int height)
 {
-    render::FrameSettings s;
-    s.width = width;
-    s.height = height;
-    s.msaa = 1;
-    s.tonemap = render::Tonemap::None;
+    render::FrameSettings s = test::radianceFrame(width, height);
     s.shadows.enabled = false;
     s.energyCompensation = false;
     s.ambient = glm::vec3(0.0f);

@@ -8,6 +8,7 @@
 // diffuseTransmissionColorFactor x diffuseTransmissionColorTexture's RGB (sRGB); under
 // image-based light the BTDF sees the irradiance from -n.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 #include "GltfBrdfTerms.h"
 
@@ -70,11 +71,7 @@ constexpr int kSize = 128;
 
 render::FrameSettings exactSettings()
 {
-    render::FrameSettings settings;
-    settings.width = settings.height = kSize;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
-    settings.energyCompensation = false; // exactly the glTF BRDF
+    render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
     settings.environment.skybox = false;
     return settings;
 }

@@ -5,6 +5,7 @@
 // by their sector; every pixel of a Doom frame of the demo level and of a scene full of
 // billboards is a palette colour.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 
 #include <cmath>
@@ -112,10 +113,7 @@ scene::Scene patchScene(bool doomMaterials)
 render::FrameSettings plainSettings()
 {
     // Nothing between the forward pass and the bytes: one sample, no curve, no exposure.
-    render::FrameSettings s;
-    s.width = s.height = kSize;
-    s.msaa = 1;
-    s.tonemap = render::Tonemap::None;
+    render::FrameSettings s = test::radianceFrame(kSize, kSize);
     return s;
 }
 

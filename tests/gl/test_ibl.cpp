@@ -3,6 +3,7 @@
 // mirror sphere, the split sum against a CPU Monte Carlo integral of the same BRDF under a
 // real HDR, and the environment block's partial uploads.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "SphereTiles.h"
 
 #include <algorithm>
@@ -440,10 +441,7 @@ TEST_F(GlTest, EnvironmentBlockUploadsOnlyWhatChanged)
     render::Renderer renderer;
     renderer.setScene(s);
     renderer.setEnvironment(render::constantEnvironment(glm::vec3(0.5f)));
-    render::FrameSettings settings;
-    settings.width = settings.height = 32;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
+    render::FrameSettings settings = test::radianceFrame(32, 32);
     const render::View near = render::lookAtView({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
     const render::View far = render::lookAtView({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
     using shared::EnvironmentData;
@@ -732,11 +730,7 @@ TEST_F(GlTest, SkyboxShowsTheMapAcrossCubeFaceEdges)
         const int size = 192;
         const render::View view =
             render::lookAtView(glm::vec3(0.0f), glm::vec3(1.0f, 0.8f, 1.0f), glm::vec3(0, 1, 0), glm::radians(90.0f), 1.0f, 0.1f, 100.0f);
-        render::FrameSettings settings;
-        settings.width = size;
-        settings.height = size;
-        settings.msaa = 1;
-        settings.tonemap = render::Tonemap::None;
+        render::FrameSettings settings = test::radianceFrame(size, size);
         renderer.render(view, settings);
         const ImageFloat image = renderer.readRadiance();
         const int face = width / 2; // the cube's face size (BakeSettings: half the map's width)
@@ -785,10 +779,7 @@ TEST_F(GlTest, SkyFollowsTheEnvironmentsRotationBothWays)
         render::lookAtView(glm::vec3(0.0f), glm::vec3(1.0f, 0.3f, 0.2f), glm::vec3(0, 1, 0), glm::radians(90.0f), 1.0f, 0.1f, 100.0f);
     const glm::mat4 inverse = glm::inverse(view.projection * view.view);
     for (float degrees : {0.0f, 40.0f, 0.0f, -120.0f, 360.0f}) {
-        render::FrameSettings settings;
-        settings.width = settings.height = size;
-        settings.msaa = 1;
-        settings.tonemap = render::Tonemap::None;
+        render::FrameSettings settings = test::radianceFrame(size, size);
         settings.environment.rotationDegrees = degrees;
         renderer.render(view, settings);
         const ImageFloat image = renderer.readRadiance();
@@ -832,10 +823,7 @@ TEST_F(GlTest, SkyShowsTheExtractedSun)
     const render::View view = render::lookAtView(glm::vec3(0.0f), sun->direction, std::abs(sun->direction.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0),
                                                  glm::radians(10.0f), 1.0f, 0.1f, 100.0f);
     const glm::mat4 inverse = glm::inverse(view.projection * view.view);
-    render::FrameSettings settings;
-    settings.width = settings.height = size;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
+    render::FrameSettings settings = test::radianceFrame(size, size);
     const auto renderSky = [&](const render::EnvironmentMap& map) {
         render::Renderer renderer;
         renderer.setEnvironment(map, bake);

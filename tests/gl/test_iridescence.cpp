@@ -11,6 +11,8 @@
 // cos theta1, the diffuse weight 1 - F per channel, the thickness texture ignored, the split
 // sum's Fresnel left as the table's, no film per importance sample, the debug view without it.
 #include "GlTestContext.h"
+#include "LitSphere.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 #include "GltfBrdfTerms.h"
 #include "SphereTiles.h"
@@ -126,25 +128,6 @@ LobeIntegrals lobeIntegrals(const Filmed& m, double NoV, double perceptualRoughn
 constexpr double kRelative = 0.015;
 constexpr double kAbsolute = 2e-3;
 
-render::FrameSettings frameSettings(int size)
-{
-    render::FrameSettings settings;
-    settings.width = settings.height = size;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
-    settings.energyCompensation = false; // exactly the glTF BRDF
-    return settings;
-}
-
-scene::Light pointLight(float intensity)
-{
-    scene::Light light;
-    light.type = scene::Light::Type::Point;
-    light.intensity = intensity;
-    light.color = {1.0f, 0.95f, 0.9f};
-    return light;
-}
-
 scene::Material materialOf(const Filmed& c)
 {
     scene::Material material;
@@ -168,44 +151,31 @@ Comparison compareSphere(const char* name, const Filmed& c, const glm::vec3& lig
 {
     scene::Scene s;
     scene::addShape(s, scene::makeUvSphere(1.0f, 256, 128), materialOf(c), glm::mat4(1.0f), "sphere");
-    const scene::Light light = pointLight(intensity);
+    const scene::Light light = test::pointLight(intensity, {1.0f, 0.95f, 0.9f});
     scene::addLight(s, light, lightPosition, -lightPosition);
 
-    const glm::vec3 eye(0.0f, 0.0f, 4.0f);
-    const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
-    render::Renderer renderer;
-    renderer.setScene(s);
-    renderer.render(view, frameSettings(96));
-    const ImageFloat image = renderer.readRadiance();
+    const ImageFloat image = test::renderSphere(s, test::radianceFrame(96, 96, test::Brdf::Exact));
 
-    const glm::dmat4 inverse = test::inverseViewProjection(view);
     Filmed bare = c;
     bare.iridescence = 0.0;
     Comparison result;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            dvec3 p;
-            if (!hitUnitSphere(pixelRay(inverse, x, y, image.width, image.height), p)) continue;
-            const dvec3 n = glm::normalize(p);
-            const dvec3 v = glm::normalize(dvec3(eye) - p);
-            if (glm::dot(n, v) < 0.25) continue; // silhouette pixels straddle facets and background
-            const dvec3 toLight = dvec3(lightPosition) - p;
-            const double distance = glm::length(toLight);
-            const dvec3 l = toLight / distance;
-            const dvec3 E = dvec3(light.color) * (double(light.intensity) / (distance * distance));
-            const dvec3 expected = filmedRadiance(c, n, v, l) * E;
-            const dvec3 plain = filmedRadiance(bare, n, v, l) * E;
-            ++result.tested;
-            for (int ch = 0; ch < 3; ++ch) {
-                const double got = image.pixels[(size_t(y) * image.width + x) * 4 + ch];
-                const double error = std::abs(got - expected[ch]);
-                const double tolerance = kRelative * expected[ch] + kAbsolute;
-                EXPECT_LE(error, tolerance) << name << " pixel (" << x << ", " << y << ") channel " << ch << ": GPU " << got
-                                            << " CPU " << expected[ch];
-                if (expected[ch] > 0.05) result.maxRelativeError = std::max(result.maxRelativeError, error / expected[ch]);
-                result.filmMatters = std::max(result.filmMatters, std::abs(plain[ch] - expected[ch]) / tolerance);
-            }
+    for (const test::SpherePixel& px : test::spherePixels(image)) {
+        const dvec3 n = px.n, v = px.v;
+        const test::PointLightAt lit = test::pointLightAt(light, lightPosition, px.p);
+        const dvec3 l = lit.l, E = lit.E;
+        const dvec3 expected = filmedRadiance(c, n, v, l) * E;
+        const dvec3 plain = filmedRadiance(bare, n, v, l) * E;
+        ++result.tested;
+        for (int ch = 0; ch < 3; ++ch) {
+            const double got = px.got[ch];
+            const double error = std::abs(got - expected[ch]);
+            const double tolerance = kRelative * expected[ch] + kAbsolute;
+            EXPECT_LE(error, tolerance) << name << " pixel (" << px.x << ", " << px.y << ") channel " << ch << ": GPU " << got
+                                        << " CPU " << expected[ch];
+            if (expected[ch] > 0.05) result.maxRelativeError = std::max(result.maxRelativeError, error / expected[ch]);
+            result.filmMatters = std::max(result.filmMatters, std::abs(plain[ch] - expected[ch]) / tolerance);
         }
+    }
     std::printf("iridescence, %s: %d pixels, worst relative error %.3f%%, film vs none up to %.0f tolerances\n", name,
                 result.tested, 100.0 * result.maxRelativeError, result.filmMatters);
     return result;
@@ -248,14 +218,14 @@ TEST_F(GlTest, IridescenceThicknessAndStrengthFromGltfTextures)
     EXPECT_FLOAT_EQ(s.materials[0].iridescenceThicknessMinimum, 100.0f);
     EXPECT_FLOAT_EQ(s.materials[0].iridescenceThicknessMaximum, 700.0f);
     const glm::vec3 lightPosition(0.4f, 0.3f, 2.0f);
-    const scene::Light light = pointLight(6.0f);
+    const scene::Light light = test::pointLight(6.0f, {1.0f, 0.95f, 0.9f});
     scene::addLight(s, light, lightPosition, -lightPosition);
     constexpr int kSize = 128;
     const glm::vec3 eye(0.0f, 0.0f, 3.0f);
     const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(45.0f), 1.0f, 0.1f, 20.0f);
     render::Renderer renderer;
     renderer.setScene(s);
-    renderer.render(view, frameSettings(kSize));
+    renderer.render(view, test::radianceFrame(kSize, kSize, test::Brdf::Exact));
     const ImageFloat image = renderer.readRadiance();
 
     const int texelG[2][2] = {{0, 85}, {170, 255}}; // [row][column] of the PNG
@@ -273,10 +243,8 @@ TEST_F(GlTest, IridescenceThicknessAndStrengthFromGltfTextures)
             const int column = (1.0 - u) < 0.5 ? 0 : 1, row = v < 0.5 ? 0 : 1;
             Filmed m{{0.8, 0.8, 0.8}, 1.0, 0.45, 230.0 / 255.0, 1.6, 100.0 + 600.0 * texelG[row][column] / 255.0};
             const dvec3 vv = glm::normalize(dvec3(eye) - p);
-            const dvec3 toLight = dvec3(lightPosition) - p;
-            const double distance = glm::length(toLight);
-            const dvec3 l = toLight / distance;
-            const dvec3 E = dvec3(light.color) * (double(light.intensity) / (distance * distance));
+            const test::PointLightAt lit = test::pointLightAt(light, lightPosition, p);
+            const dvec3 l = lit.l, E = lit.E;
             const dvec3 expected = filmedRadiance(m, n, vv, l) * E;
             Filmed untextured = m;
             untextured.thickness = 700.0; // the maximum: the thickness texture ignored

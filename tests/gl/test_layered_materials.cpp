@@ -5,6 +5,8 @@
 // compose, against shading/Brdf.cpp's brdf::evaluate (double precision, every layer) at each
 // pixel's analytic ray-sphere hit.
 #include "GlTestContext.h"
+#include "LitSphere.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 
 #include <algorithm>
@@ -89,20 +91,11 @@ Comparison renderAndCompare(const Layers& c)
     const glm::vec3 lightPosition(2.0f, 2.5f, 3.0f);
     scene::addLight(s, light, lightPosition, -lightPosition);
 
-    render::FrameSettings settings;
-    settings.width = settings.height = 96;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
+    render::FrameSettings settings = test::radianceFrame(96, 96, test::Brdf::Exact); // what brdf::evaluate gives
     // The anisotropic lobe's V is the height-correlated one (its variant resolves G to it): the
     // same G for every case, and for the clearcoat's lobe.
     settings.brdfGeometry = render::BrdfGeometry::SmithGGXCorrelated;
-    settings.energyCompensation = false; // exactly the BRDF brdf::evaluate gives
-    const glm::vec3 eye(0.0f, 0.0f, 4.0f);
-    const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
-    render::Renderer renderer;
-    renderer.setScene(s);
-    renderer.render(view, settings);
-    const ImageFloat image = renderer.readRadiance();
+    const ImageFloat image = test::renderSphere(s, settings);
 
     render::brdf::Surface surface;
     surface.baseColor = dvec3(c.baseColor);
@@ -118,43 +111,35 @@ Comparison renderAndCompare(const Layers& c)
     const bool sheen = glm::any(glm::greaterThan(c.sheenColor, glm::vec3(0.0f)));
     const SheenAlbedoTable albedo(c.sheenRoughness);
 
-    const glm::dmat4 inverse = test::inverseViewProjection(view);
     Comparison result;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            dvec3 p;
-            if (!hitUnitSphere(pixelRay(inverse, x, y, image.width, image.height), p)) continue;
-            const dvec3 n = glm::normalize(p);
-            const dvec3 v = glm::normalize(dvec3(eye) - p);
-            if (glm::dot(n, v) < 0.25) continue; // silhouette pixels straddle facets and background
-            if (std::abs(n.y) > 0.95) continue;  // the poles, where the sphere's tangent turns within a pixel
-            // scene::makeUvSphere's tangent, dP/du along the parallels.
-            surface.anisotropyDirection = glm::normalize(dvec3(n.z, 0.0, -n.x));
-            surface.sheenAlbedo = sheen ? albedo.at(glm::dot(n, v)) : 0.0;
-            const dvec3 toLight = dvec3(lightPosition) - p;
-            const double distance = glm::length(toLight);
-            const dvec3 l = toLight / distance;
-            const double NoL = glm::dot(n, l);
-            if (NoL <= 0.0) continue;
-            const dvec3 E = dvec3(light.color) * (double(light.intensity) / (distance * distance));
-            auto radiance = [&](const render::brdf::Surface& with) { return render::brdf::evaluate(with, n, v, l) * E * NoL; };
-            const dvec3 expected = radiance(surface);
-            render::brdf::Surface filmless = surface, isotropic = surface;
-            filmless.iridescence.factor = 0.0;
-            isotropic.anisotropy = 0.0;
-            const dvec3 withoutFilm = radiance(filmless), withoutAnisotropy = radiance(isotropic);
-            ++result.tested;
-            for (int ch = 0; ch < 3; ++ch) {
-                const double got = image.pixels[(size_t(y) * image.width + x) * 4 + ch];
-                const double error = std::abs(got - expected[ch]);
-                const double tolerance = kRelative * expected[ch] + kAbsolute + (sheen ? 0.01 * expected[ch] : 0.0);
-                EXPECT_LE(error, tolerance) << c.name << " pixel (" << x << ", " << y << ") channel " << ch << ": GPU " << got
-                                            << " CPU " << expected[ch];
-                if (expected[ch] > 0.05) result.worst = std::max(result.worst, error / expected[ch]);
-                result.filmMatters = std::max(result.filmMatters, std::abs(withoutFilm[ch] - expected[ch]) / tolerance);
-                result.anisotropyMatters = std::max(result.anisotropyMatters, std::abs(withoutAnisotropy[ch] - expected[ch]) / tolerance);
-            }
+    for (const test::SpherePixel& px : test::spherePixels(image)) {
+        const dvec3 n = px.n, v = px.v;
+        if (std::abs(n.y) > 0.95) continue;  // the poles, where the sphere's tangent turns within a pixel
+        // scene::makeUvSphere's tangent, dP/du along the parallels.
+        surface.anisotropyDirection = glm::normalize(dvec3(n.z, 0.0, -n.x));
+        surface.sheenAlbedo = sheen ? albedo.at(glm::dot(n, v)) : 0.0;
+        const test::PointLightAt lit = test::pointLightAt(light, lightPosition, px.p);
+        const dvec3 l = lit.l, E = lit.E;
+        const double NoL = glm::dot(n, l);
+        if (NoL <= 0.0) continue;
+        auto radiance = [&](const render::brdf::Surface& with) { return render::brdf::evaluate(with, n, v, l) * E * NoL; };
+        const dvec3 expected = radiance(surface);
+        render::brdf::Surface filmless = surface, isotropic = surface;
+        filmless.iridescence.factor = 0.0;
+        isotropic.anisotropy = 0.0;
+        const dvec3 withoutFilm = radiance(filmless), withoutAnisotropy = radiance(isotropic);
+        ++result.tested;
+        for (int ch = 0; ch < 3; ++ch) {
+            const double got = px.got[ch];
+            const double error = std::abs(got - expected[ch]);
+            const double tolerance = kRelative * expected[ch] + kAbsolute + (sheen ? 0.01 * expected[ch] : 0.0);
+            EXPECT_LE(error, tolerance) << c.name << " pixel (" << px.x << ", " << px.y << ") channel " << ch << ": GPU " << got
+                                        << " CPU " << expected[ch];
+            if (expected[ch] > 0.05) result.worst = std::max(result.worst, error / expected[ch]);
+            result.filmMatters = std::max(result.filmMatters, std::abs(withoutFilm[ch] - expected[ch]) / tolerance);
+            result.anisotropyMatters = std::max(result.anisotropyMatters, std::abs(withoutAnisotropy[ch] - expected[ch]) / tolerance);
         }
+    }
     return result;
 }
 

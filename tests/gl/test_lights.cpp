@@ -3,6 +3,7 @@
 // (the std430 storage block, the texel view) see every light as packed, and every light of a
 // thousand reaches the shading of every reflection model.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 
 #include <unistd.h>
 #include <epoxy/gl.h>
@@ -325,11 +326,7 @@ ImageFloat renderManyLights(scene::ShadingModel model, float* exposureScale)
     renderer.setScene(s);
     EXPECT_EQ(renderer.lightCount(), kLightCount);
     renderer.setMaterialParameter(0, render::MaterialParameter::PhongSpecular, glm::vec4(0.0f)); // ks = 0
-    render::FrameSettings settings;
-    settings.width = settings.height = 32;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
-    settings.energyCompensation = false;
+    render::FrameSettings settings = test::radianceFrame(32, 32, test::Brdf::Exact);
     const render::View view = render::lookAtView({0, 3, 0}, {0, 0, 0}, {0, 0, -1}, glm::radians(60.0f), 1.0f, 0.1f, 10.0f);
     renderer.render(view, settings);
     *exposureScale = renderer.exposureScale();

@@ -3,6 +3,7 @@
 // radiance, every pass timed in frame order; and with every pass off, the frame is the fused
 // resolve + tone map it always was.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 
 #include <cmath>
 #include <string>
@@ -148,10 +149,7 @@ TEST_F(GlTest, FxaaSmoothsAliasedEdgesOnly)
     render::Renderer renderer;
     renderer.setScene(s);
     const render::View view = render::lookAtView({0, 0, 2}, {0, 0, 0}, {0, 1, 0}, glm::radians(45.0f), 1.0f, 0.1f, 10.0f);
-    render::FrameSettings settings;
-    settings.width = settings.height = 97;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
+    render::FrameSettings settings = test::radianceFrame(97, 97);
     renderer.render(view, settings);
     const ImageRGBA8 aliased = renderer.readImage();
     settings.fxaa.enabled = true;

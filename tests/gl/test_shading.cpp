@@ -1,6 +1,7 @@
 // GPU against CPU: a sphere lit by one light, read back as floats, each pixel compared with
 // shading/Brdf.h evaluated at that pixel's analytic ray-sphere hit.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 
 #include <algorithm>
@@ -75,10 +76,7 @@ scene::Scene caseScene(const Case& c)
 
 render::FrameSettings caseSettings(const Case& c)
 {
-    render::FrameSettings settings;
-    settings.width = settings.height = 96;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
+    render::FrameSettings settings = test::radianceFrame(96, 96);
     settings.brdfGeometry = c.geometry;
     settings.energyCompensation = false; // exactly the glTF BRDF, as shading/Brdf.cpp evaluates it
     settings.lightCulling = c.culling;

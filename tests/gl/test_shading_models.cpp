@@ -3,6 +3,7 @@
 // Phong between them; flat shading uses the face normal; switching one material's model or a
 // parameter at run time changes the next frame for that material only.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 
 #include <algorithm>
@@ -34,16 +35,6 @@ constexpr float kLightLux = 3.0f;
 render::View testView()
 {
     return render::lookAtView(kEye, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
-}
-
-render::FrameSettings testSettings()
-{
-    render::FrameSettings s;
-    s.width = s.height = kSize;
-    s.msaa = 1;
-    s.tonemap = render::Tonemap::None;
-    s.energyCompensation = false;
-    return s;
 }
 
 scene::Material testMaterial(glm::vec3 color = {0.8f, 0.3f, 0.2f})
@@ -78,7 +69,7 @@ ImageFloat renderSphere(scene::ShadingModel model, const scene::Primitive& spher
     addTestLight(s);
     render::Renderer renderer;
     renderer.setScene(s);
-    renderer.render(testView(), testSettings());
+    renderer.render(testView(), test::radianceFrame(kSize, kSize, test::Brdf::Exact));
     return renderer.readRadiance();
 }
 
@@ -92,7 +83,7 @@ TEST_F(GlTest, EveryShadingModelRenders)
     render::Renderer renderer;
     renderer.setScene(s);
     for (int model = 0; model < scene::kShadingModelCount; ++model) {
-        render::FrameSettings settings = testSettings();
+        render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
         settings.width = settings.height = 64;
         settings.materialOverride.model = scene::ShadingModel(model);
         renderer.render(testView(), settings);
@@ -101,7 +92,7 @@ TEST_F(GlTest, EveryShadingModelRenders)
         EXPECT_GT(centre.r, 0.01f) << scene::shadingModelName(scene::ShadingModel(model));
     }
     // Debug views too: base colour shows the base colour exactly.
-    render::FrameSettings settings = testSettings();
+    render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
     settings.width = settings.height = 64;
     settings.debugView = DebugView::BaseColor;
     renderer.render(testView(), settings);
@@ -200,7 +191,7 @@ TEST_F(GlTest, SwitchingOneMaterialChangesOnlyIt)
     render::Renderer renderer;
     renderer.setScene(s);
     ASSERT_EQ(renderer.materialCount(), 3); // two, and glTF's default material
-    const render::FrameSettings settings = testSettings();
+    const render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
     const render::View view = testView();
     renderer.render(view, settings);
     const ImageFloat before = renderer.readRadiance();
@@ -277,7 +268,7 @@ TEST_F(GlTest, IorClassicSpecularAndSectorLightAreLiveParameters)
     render::Renderer renderer;
     renderer.setScene(s);
     const render::View view = testView();
-    const render::FrameSettings settings = testSettings();
+    const render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
     using render::MaterialParameter;
     auto frame = [&] {
         renderer.render(view, settings);

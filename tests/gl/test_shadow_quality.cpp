@@ -10,6 +10,7 @@
 // frame with shadows off: shadows only multiply each light's contribution (lights/shadow.glsl),
 // so the ratio is the shadow term itself, free of the BRDF, the light's falloff and the view.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "ShadowScenes.h"
 
 #include <algorithm>
@@ -110,17 +111,6 @@ struct TopDown {
         return v;
     }
 };
-
-render::FrameSettings baseSettings(const TopDown& camera)
-{
-    render::FrameSettings settings;
-    settings.width = camera.width;
-    settings.height = camera.height_px;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
-    settings.energyCompensation = false;
-    return settings;
-}
 
 std::filesystem::path outputDir()
 {
@@ -319,7 +309,7 @@ TEST_F(GlTest, PcssPenumbraMatchesSimilarTrianglesAndAnAreaLight)
         sc.lightDirection = {0.0f, -1.0f, 0.0f};
         render::Renderer renderer;
         renderer.setScene(buildScene(sc));
-        render::FrameSettings settings = baseSettings(camera);
+        render::FrameSettings settings = test::radianceFrame(camera.width, camera.height_px, test::Brdf::Exact);
         settings.shadows.filter = ShadowFilter::Pcss;
         const Visibility vis = renderVisibility(renderer, camera, settings, name);
         const std::vector<double> gpu = columnProfile(vis, 0, vis.height);
@@ -421,7 +411,7 @@ TEST_F(GlTest, NoPeterPanningAtTheBaseOfABoardInTheSun)
     camera.halfHeight = 0.375;
     camera.width = 1024; // a pixel of 1 mm, about half a texel
     camera.height_px = 768;
-    render::FrameSettings settings = baseSettings(camera);
+    render::FrameSettings settings = test::radianceFrame(camera.width, camera.height_px, test::Brdf::Exact);
     settings.shadows.distance = 2.5f; // so that the splits are known here (the floor at 1.5 m)
     const render::View view = camera.view();
     const CascadeAt cascade =
@@ -493,7 +483,7 @@ TEST_F(GlTest, CascadeShadowsStayPutWhenTheCameraMovesOrTurns)
     a.height = 2.0;
     a.halfWidth = a.halfHeight = 0.6;
     a.width = a.height_px = 1024;
-    render::FrameSettings settings = baseSettings(a);
+    render::FrameSettings settings = test::radianceFrame(a.width, a.height_px, test::Brdf::Exact);
     settings.shadows.filter = ShadowFilter::Hard;
     settings.shadows.distance = 2.5f;
 

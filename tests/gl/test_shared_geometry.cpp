@@ -3,6 +3,7 @@
 // material; any other shape, even of the same size, gets its own. Levels of detail are made
 // once per shared geometry and every primitive drawing it has them.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 
 #include <set>
@@ -68,10 +69,7 @@ TEST_F(GlTest, RepeatedShapesShareOneUploadAndKeepTheirMaterials)
         }
     }
     // Each sphere drawn in its own base colour (unlit: the colour itself) from the shared buffers.
-    render::FrameSettings settings;
-    settings.width = settings.height = kSize;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
+    render::FrameSettings settings = test::radianceFrame(kSize, kSize);
     settings.materialOverride.model = scene::ShadingModel::Unlit;
     const render::View view = render::lookAtView({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, glm::radians(45.0f), 1.0f, 0.1f, 20.0f);
     render::Renderer renderer;

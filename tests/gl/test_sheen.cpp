@@ -12,6 +12,8 @@
 // image-based sheen without E (the furnace at 2.0 L, the Monte Carlo comparison 430 % off); the
 // debug view without E (0.94 off).
 #include "GlTestContext.h"
+#include "LitSphere.h"
+#include "RadianceFrame.h"
 #include "IblReference.h"
 #include "ImageProbe.h"
 #include "GltfBrdfTerms.h"
@@ -153,25 +155,6 @@ constexpr double kAbsolute = 2e-3;
 // to 0.3; 32 samples 8-17 %, 128 2.8-6.6 %, 256 1.8-4.5 %: the error is the per-pixel sampling's).
 constexpr double kSheenIblBound = 0.13;
 
-render::FrameSettings frameSettings(int size)
-{
-    render::FrameSettings settings;
-    settings.width = settings.height = size;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
-    settings.energyCompensation = false; // exactly the glTF BRDF
-    return settings;
-}
-
-scene::Light pointLight(float intensity)
-{
-    scene::Light light;
-    light.type = scene::Light::Type::Point;
-    light.intensity = intensity;
-    light.color = {1.0f, 0.9f, 0.8f};
-    return light;
-}
-
 scene::Material toMaterial(const Sheened& c)
 {
     scene::Material material;
@@ -194,47 +177,34 @@ Comparison compareSphere(const char* name, const Sheened& c, const glm::vec3& li
 {
     scene::Scene s;
     scene::addShape(s, scene::makeUvSphere(1.0f, 256, 128), toMaterial(c), glm::mat4(1.0f), "sphere");
-    const scene::Light light = pointLight(intensity);
+    const scene::Light light = test::pointLight(intensity);
     scene::addLight(s, light, lightPosition, -lightPosition);
 
-    const glm::vec3 eye(0.0f, 0.0f, 4.0f);
-    const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(40.0f), 1.0f, 0.1f, 20.0f);
-    render::Renderer renderer;
-    renderer.setScene(s);
-    renderer.render(view, frameSettings(96));
-    const ImageFloat image = renderer.readRadiance();
+    const ImageFloat image = test::renderSphere(s, test::radianceFrame(96, 96, test::Brdf::Exact));
 
     const SheenAlbedo albedo(c.sheenRoughness);
     Sheened bare = c;
     bare.sheenColor = dvec3(0.0);
-    const glm::dmat4 inverse = test::inverseViewProjection(view);
     Comparison result;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            dvec3 p;
-            if (!hitUnitSphere(pixelRay(inverse, x, y, image.width, image.height), p)) continue;
-            const dvec3 n = glm::normalize(p);
-            const dvec3 v = glm::normalize(dvec3(eye) - p);
-            if (glm::dot(n, v) < 0.2) continue; // silhouette pixels straddle facets and background
-            const dvec3 toLight = dvec3(lightPosition) - p;
-            const double distance = glm::length(toLight);
-            const dvec3 l = toLight / distance;
-            const dvec3 E = dvec3(light.color) * (double(light.intensity) / (distance * distance));
-            const double e = albedo.at(glm::dot(n, v));
-            const dvec3 expected = sheenedRadiance(c, n, v, l, e) * E;
-            const dvec3 scaledBase = sheenedRadiance(bare, n, v, l, 0.0) * E * (1.0 - max3(c.sheenColor) * e);
-            ++result.tested;
-            if (glm::length(expected - scaledBase) > glm::length(scaledBase)) ++result.sheenDominated;
-            for (int ch = 0; ch < 3; ++ch) {
-                const double got = image.pixels[(size_t(y) * image.width + x) * 4 + ch];
-                const double error = std::abs(got - expected[ch]);
-                // 0.01 E of the base for the table of E (its half floats, its bilinear lookup).
-                const double tolerance = kRelative * expected[ch] + kAbsolute + 0.01 * (sheenedRadiance(bare, n, v, l, 0.0) * E)[ch];
-                EXPECT_LE(error, tolerance) << name << " pixel (" << x << ", " << y << ") channel " << ch << ": GPU " << got
-                                            << " CPU " << expected[ch];
-                if (expected[ch] > 0.05) result.maxRelativeError = std::max(result.maxRelativeError, error / expected[ch]);
-            }
+    for (const test::SpherePixel& px : test::spherePixels(image, 0.2)) {
+        const dvec3 n = px.n, v = px.v;
+        const test::PointLightAt lit = test::pointLightAt(light, lightPosition, px.p);
+        const dvec3 l = lit.l, E = lit.E;
+        const double e = albedo.at(glm::dot(n, v));
+        const dvec3 expected = sheenedRadiance(c, n, v, l, e) * E;
+        const dvec3 scaledBase = sheenedRadiance(bare, n, v, l, 0.0) * E * (1.0 - max3(c.sheenColor) * e);
+        ++result.tested;
+        if (glm::length(expected - scaledBase) > glm::length(scaledBase)) ++result.sheenDominated;
+        for (int ch = 0; ch < 3; ++ch) {
+            const double got = px.got[ch];
+            const double error = std::abs(got - expected[ch]);
+            // 0.01 E of the base for the table of E (its half floats, its bilinear lookup).
+            const double tolerance = kRelative * expected[ch] + kAbsolute + 0.01 * (sheenedRadiance(bare, n, v, l, 0.0) * E)[ch];
+            EXPECT_LE(error, tolerance) << name << " pixel (" << px.x << ", " << px.y << ") channel " << ch << ": GPU " << got
+                                        << " CPU " << expected[ch];
+            if (expected[ch] > 0.05) result.maxRelativeError = std::max(result.maxRelativeError, error / expected[ch]);
         }
+    }
     std::printf("sheen, %s: %d pixels (%d where the sheen outshines the base), worst relative error %.3f%%\n", name, result.tested,
                 result.sheenDominated, 100.0 * result.maxRelativeError);
     return result;
@@ -295,14 +265,14 @@ TEST_F(GlTest, SheenTexturesFromGltf)
     scene::Scene s = scene::loadGltf(std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/sheen_quad.gltf");
     ASSERT_EQ(s.materials.size(), 1u);
     const glm::vec3 lightPosition(0.3f, 2.0f, 0.6f);
-    const scene::Light light = pointLight(6.0f);
+    const scene::Light light = test::pointLight(6.0f);
     scene::addLight(s, light, lightPosition, -lightPosition);
     constexpr int kSize = 128;
     const glm::vec3 eye(0.0f, -2.4f, 1.4f);
     const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 0, 1}, glm::radians(50.0f), 1.0f, 0.1f, 20.0f);
     render::Renderer renderer;
     renderer.setScene(s);
-    renderer.render(view, frameSettings(kSize));
+    renderer.render(view, test::radianceFrame(kSize, kSize, test::Brdf::Exact));
     const ImageFloat image = renderer.readRadiance();
 
     const dvec3 texels[2] = {{srgbToLinear(255 / 255.0), srgbToLinear(128 / 255.0), srgbToLinear(64 / 255.0)},
@@ -321,10 +291,8 @@ TEST_F(GlTest, SheenTexturesFromGltf)
             const dvec3 p = ray.origin + ray.direction * (-ray.origin.z / ray.direction.z);
             if (std::abs(p.x) > 0.97 || std::abs(p.y) > 0.97 || std::abs(p.x) < 0.04) continue; // edges and the texel seam
             const dvec3 v = glm::normalize(dvec3(eye) - p);
-            const dvec3 toLight = dvec3(lightPosition) - p;
-            const double distance = glm::length(toLight);
-            const dvec3 l = toLight / distance;
-            const dvec3 E = dvec3(light.color) * (double(light.intensity) / (distance * distance));
+            const test::PointLightAt lit = test::pointLightAt(light, lightPosition, p);
+            const dvec3 l = lit.l, E = lit.E;
             const double e = albedo.at(glm::dot(n, v));
             c.sheenColor = factor * texels[p.x < 0.0 ? 0 : 1];
             const dvec3 expected = sheenedRadiance(c, n, v, l, e) * E;

@@ -6,6 +6,7 @@
 // Broken on purpose (2026-12-07): the SPECULAR_TEXTURES variant reading neither texture failed at
 // 7,274 of the 28,422 channels checked; every texture read through uv set 0 failed at 4,840.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 #include "GltfBrdfTerms.h"
 
@@ -74,11 +75,7 @@ TEST_F(GlTest, SpecularTexturesFromGltf)
     constexpr int kSize = 128;
     const glm::vec3 eye(0.0f, -0.3f, 3.0f);
     const render::View view = render::lookAtView(eye, {0, 0, 0}, {0, 1, 0}, glm::radians(45.0f), 1.0f, 0.1f, 20.0f);
-    render::FrameSettings settings;
-    settings.width = settings.height = kSize;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
-    settings.energyCompensation = false; // exactly the glTF BRDF
+    render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
     render::Renderer renderer;
     renderer.setScene(s);
     renderer.render(view, settings);

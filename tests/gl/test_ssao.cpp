@@ -2,6 +2,7 @@
 // occlusion: flat surfaces stay open, inside corners darken, silhouettes cast no halo, the
 // result barely depends on resolution, and direct light is never darkened.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 
 #include <cmath>
 
@@ -184,11 +185,7 @@ TEST_F(GlTest, SsaoDarkensAmbientLightOnly)
     s.addNode(std::move(node));
     renderer.setScene(s);
     const render::View view = cornerView(4.0f / 3.0f);
-    render::FrameSettings settings;
-    settings.width = 160;
-    settings.height = 120;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
+    render::FrameSettings settings = test::radianceFrame(160, 120);
     renderer.render(view, settings);
     const ImageFloat direct = renderer.readRadiance();
     settings.ssao.enabled = true;

@@ -2,6 +2,7 @@
 // chosen along triangle edges (a regression: llvmpipe zeroes storage-buffer loads in helper
 // invocations, which once gave the pixels on a quad's diagonal the coarsest mip).
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -42,10 +43,7 @@ ImageFloat renderPlane(const scene::Scene& s, int size)
     view.view = glm::lookAt(glm::vec3(0, 0, 2), glm::vec3(0), glm::vec3(0, 1, 0));
     view.projection = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 0.1f, 10.0f);
     view.position = {0, 0, 2};
-    render::FrameSettings settings;
-    settings.width = settings.height = size;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
+    render::FrameSettings settings = test::radianceFrame(size, size);
     renderer.render(view, settings);
     return renderer.readRadiance();
 }

@@ -3,6 +3,7 @@
 // Fresnel at normal incidence and Beer–Lambert for transmission, McGuire & Bavoil's weighted
 // mean for order-independent transparency, Porter–Duff "over" for sorted blending.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 
 #include <algorithm>
@@ -30,16 +31,6 @@ using specula::test::Ray;
 namespace {
 
 constexpr int kSize = 96;
-
-render::FrameSettings exactSettings()
-{
-    render::FrameSettings s;
-    s.width = s.height = kSize;
-    s.msaa = 1;
-    s.tonemap = render::Tonemap::None;
-    s.energyCompensation = false; // exactly the glTF BRDF, as shading/Brdf.cpp evaluates it
-    return s;
-}
 
 ImageFloat renderScene(const scene::Scene& s, const render::View& view, const render::FrameSettings& settings)
 {
@@ -148,7 +139,7 @@ Peak renderBlendCase(const BlendCase& c, float alpha)
     light.range = 8.0f;
     const glm::vec3 lightPosition(2.0f, 2.5f, 3.0f);
     scene::addLight(s, light, lightPosition, -lightPosition);
-    render::FrameSettings settings = exactSettings();
+    render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
     settings.blendModeOverride = c.frameOverride;
     const render::View view = frontView();
     const ImageFloat image = renderScene(s, view, settings);
@@ -260,7 +251,7 @@ TEST_F(GlTest, TransparencyThinSlabTransmitsWithoutShift)
         const float T = 0.8f, ior = 1.5f;
         const glm::mat4 slab = facingZ(glm::mat4(1.0f));
         scene::addShape(withSlab, scene::makePlane(1.6f), glass(T, ior, 0.0f), slab, "slab");
-        render::FrameSettings settings = exactSettings();
+        render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
         settings.msaa = msaa;
         const render::View view = frontView();
         const ImageFloat behind = renderScene(reference, view, settings);
@@ -298,7 +289,7 @@ TEST_F(GlTest, TransparencyVolumeAttenuatesByBeerLambert)
         const glm::mat4 slab = facingZ(glm::scale(glm::mat4(1.0f), glm::vec3(scale)));
         scene::addShape(s, scene::makePlane(0.8f), m, slab, "volume");
         const render::View view = frontView();
-        const ImageFloat image = renderScene(s, view, exactSettings());
+        const ImageFloat image = renderScene(s, view, test::radianceFrame(kSize, kSize, test::Brdf::Exact));
         const dvec3 want = (1.0 - exactF0(1.5)) * glm::pow(c, dvec3(scale * t / d)) * L;
         int tested = 0;
         for (int y = 0; y < kSize; ++y)
@@ -357,7 +348,7 @@ TEST_F(GlTest, TransparencyTransmissionAndThicknessTexturesFromGltf)
     const double d = 0.25;
     addBackdrop(s, glm::vec3(L), false);
     const render::View view = frontView();
-    const ImageFloat image = renderScene(s, view, exactSettings());
+    const ImageFloat image = renderScene(s, view, test::radianceFrame(kSize, kSize, test::Brdf::Exact));
     const QuadVolume volume{{0.9 * 128.0 / 255.0, 0.9}, {0.5, 0.5 * 64.0 / 255.0}, c, d};
     int tested = 0;
     double textureMatters = 0.0;
@@ -424,7 +415,7 @@ TEST_F(GlTest, TransparencyAnimatedTransmissionAndVolume)
         const bool rest = t < 0.0;
         renderer.setPose(rest ? -1 : 0, float(std::max(t, 0.0)));
         gpu.setPose(rest ? -1 : 0, float(std::max(t, 0.0)));
-        renderer.render(view, exactSettings());
+        renderer.render(view, test::radianceFrame(kSize, kSize, test::Brdf::Exact));
         const ImageFloat image = renderer.readRadiance();
         const double u = std::max(t, 0.0);
         const double factor = rest ? 0.9 : 0.9 * u, thick = rest ? 0.5 : 0.5 - 0.25 * u;
@@ -470,8 +461,8 @@ TEST_F(GlTest, TransparencySphereOfIorOneIsInvisible)
     scene::Scene withSphere = reference;
     scene::addShape(withSphere, scene::makeUvSphere(1.0f, 256, 128), glass(1.0f, 1.0f, 2.0f), glm::mat4(1.0f), "sphere");
     const render::View view = frontView(5.0f);
-    const ImageFloat behind = renderScene(reference, view, exactSettings());
-    const ImageFloat through = renderScene(withSphere, view, exactSettings());
+    const ImageFloat behind = renderScene(reference, view, test::radianceFrame(kSize, kSize, test::Brdf::Exact));
+    const ImageFloat through = renderScene(withSphere, view, test::radianceFrame(kSize, kSize, test::Brdf::Exact));
     int tested = 0, invisible = 0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
@@ -551,7 +542,7 @@ double oitWeight(double z, double alpha)
 TEST_F(GlTest, TransparencyOitIsOrderIndependent)
 {
     const render::View view = frontView(5.0f);
-    render::FrameSettings settings = exactSettings();
+    render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
     settings.background = glm::vec3(kBackground);
     auto shot = [&](bool reversed, render::Transparency transparency, int msaa) {
         render::FrameSettings s = settings;
@@ -684,7 +675,7 @@ scene::Primitive squaresPrimitive(float colourAlpha = 1.0f)
 TEST_F(GlTest, TransparencyBlendedWithAlphaOneIsDrawnOpaque)
 {
     const render::View view = frontView(5.0f);
-    render::FrameSettings settings = exactSettings();
+    render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
     settings.background = glm::vec3(kBackground);
     scene::Scene s;
     scene::addShape(s, squaresPrimitive(), blendedUnlit(1.0f, false), glm::mat4(1.0f), "squares");
@@ -764,7 +755,7 @@ TEST_F(GlTest, TransparencyDoubleSidedBlendDrawsBackFacesFirst)
     constexpr double kHalf = 0.6, kAlpha = 0.5;
     const render::View view =
         render::lookAtView({2.2f, 1.6f, 3.0f}, {0, 0, 0}, {0, 1, 0}, glm::radians(30.0f), 1.0f, 0.1f, 20.0f);
-    render::FrameSettings settings = exactSettings();
+    render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
     settings.background = glm::vec3(kBackground);
     auto faceColor = [](const dvec3& n) { return dvec3(0.5) + 0.45 * n; };
     scene::Primitive cube = scene::makeCube(float(kHalf));
@@ -904,7 +895,7 @@ TEST_F(GlTest, TransparencyDispersionRefractsEachChannelWithItsOwnIor)
     const glm::mat4 slab = glm::rotate(glm::mat4(1.0f), glm::radians(35.0f), glm::vec3(0, 1, 0)) *
                            glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1, 0, 0));
     const render::View view = frontView();
-    render::FrameSettings settings = exactSettings();
+    render::FrameSettings settings = test::radianceFrame(kSize, kSize, test::Brdf::Exact);
     settings.width = settings.height = kWide;
     const ImageFloat behind = renderScene(reference, view, settings);
     auto bilinear = [&](glm::dvec2 uv, int channel) {

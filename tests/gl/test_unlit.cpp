@@ -4,6 +4,7 @@
 // frame's --shading override still wins. The lit quad beside it, with the same factors, is the
 // control: it must change where the unlit one must not.
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 
 #include <cmath>
@@ -46,15 +47,6 @@ std::vector<Sample> diagonal(float x0)
     return out;
 }
 
-render::FrameSettings settings()
-{
-    render::FrameSettings s;
-    s.width = s.height = kSize;
-    s.msaa = 1;
-    s.tonemap = render::Tonemap::None;
-    return s;
-}
-
 void addSun(scene::Scene& s, float lux)
 {
     scene::Light light;
@@ -80,7 +72,7 @@ TEST_F(GlTest, UnlitGltfMaterialShowsItsBaseColourInEveryPath)
     constexpr float kTolerance = 4e-3f;
 
     // Punctual light.
-    renderer.render(view, settings());
+    renderer.render(view, test::radianceFrame(kSize, kSize));
     const ImageFloat sun = renderer.readRadiance();
     for (const Sample& p : unlit) {
         const glm::vec3 got = pixel(sun, project(view, p.position));
@@ -95,7 +87,7 @@ TEST_F(GlTest, UnlitGltfMaterialShowsItsBaseColourInEveryPath)
     addSun(brighter, 30.0f);
     renderer.setScene(brighter);
     renderer.setEnvironment(render::constantEnvironment(glm::vec3(2.0f)));
-    renderer.render(view, settings());
+    renderer.render(view, test::radianceFrame(kSize, kSize));
     const ImageFloat both = renderer.readRadiance();
     for (const Sample& p : unlit) EXPECT_EQ(pixel(both, project(view, p.position)), pixel(sun, project(view, p.position)));
     for (const Sample& p : lit)
@@ -103,7 +95,7 @@ TEST_F(GlTest, UnlitGltfMaterialShowsItsBaseColourInEveryPath)
 
     // Debug views: its inputs as for any material, no BRDF, no emission.
     auto debugFrame = [&](DebugView debugView) {
-        render::FrameSettings d = settings();
+        render::FrameSettings d = test::radianceFrame(kSize, kSize);
         d.debugView = debugView;
         renderer.render(view, d);
         return renderer.readRadiance();
@@ -121,7 +113,7 @@ TEST_F(GlTest, UnlitGltfMaterialShowsItsBaseColourInEveryPath)
     }
 
     // The frame's override wins over the file (--shading pbr shows the fallback material).
-    render::FrameSettings pbr = settings();
+    render::FrameSettings pbr = test::radianceFrame(kSize, kSize);
     pbr.materialOverride.model = scene::ShadingModel::Pbr;
     renderer.render(view, pbr);
     const ImageFloat overridden = renderer.readRadiance();

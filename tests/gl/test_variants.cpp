@@ -8,6 +8,7 @@
 // variant's colours; Renderer::setVariant not invalidating the shadow maps fails "Hidden"'s
 // floor (still shadowed).
 #include "GlTestContext.h"
+#include "RadianceFrame.h"
 #include "ImageProbe.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -27,15 +28,6 @@ constexpr int kSize = 160;
 const std::string kVariants = std::string(SPECULA_SOURCE_DIR) + "/tests/assets/gltf/variants.gltf";
 
 const glm::vec3 kRed(0.8f, 0.1f, 0.1f), kGreen(0.1f, 0.8f, 0.1f), kBlue(0.1f, 0.1f, 0.8f);
-
-render::FrameSettings settings()
-{
-    render::FrameSettings s;
-    s.width = s.height = kSize;
-    s.msaa = 1;
-    s.tonemap = render::Tonemap::None;
-    return s;
-}
 
 } // namespace
 
@@ -79,7 +71,7 @@ TEST_F(GlTest, MaterialVariantsSwitchTheDrawnMaterialsAndTheirShadows)
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
         renderer.setVariant(c.variant);
-        renderer.render(view, settings());
+        renderer.render(view, test::radianceFrame(kSize, kSize));
         const ImageFloat image = renderer.readRadiance();
         constexpr float kTolerance = 1e-3f; // unlit: the factor itself, through half floats
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(pixel(image, right)[k], c.right[k], kTolerance) << "right, channel " << k;
