@@ -38,6 +38,14 @@ bool iblOn(const FrameContext& frame)
     return frame.stores.ibl.hasEnvironment() && frame.settings.environment.lighting;
 }
 
+/// A material's shading under the frame's (`--shading`, the viewer's model menu). The unlit
+/// copies of lines and points without normals (MaterialBinding::unlitCopy) keep theirs: they
+/// have no normal to be lit by.
+ResolvedShading materialShading(const FrameSettings& s, const MaterialBinding& material)
+{
+    return resolveShading(material.unlitCopy ? scene::MaterialShading{} : s.materialOverride, s.brdfGeometry, material.features);
+}
+
 IblVariant iblVariant(const FrameContext& frame)
 {
     if (!iblOn(frame)) return IblVariant::None;
@@ -209,14 +217,15 @@ struct ForwardPass::Impl {
         return p;
     }
 
-    ForwardProgram& program(const FrameContext& frame, uint64_t features)
+    ForwardProgram& program(const FrameContext& frame, const MaterialBinding& material)
     {
         const FrameSettings& s = frame.settings;
+        uint64_t features = material.features;
         if (s.blendModeOverride && (features & SPECULA_MATERIAL_ALPHA_BLEND)) {
             features &= ~uint64_t(SPECULA_MATERIAL_BLEND_TRANSPARENT);
             if (*s.blendModeOverride == scene::BlendMode::Transparent) features |= SPECULA_MATERIAL_BLEND_TRANSPARENT;
         }
-        const ResolvedShading shading = resolveShading(s.materialOverride, s.brdfGeometry, features);
+        const ResolvedShading shading = materialShading(s, material);
         const ForwardVariant variant =
             ForwardVariant::make(features, shading, s.debugView, iblVariant(frame), s.energyCompensation, s.ssao.enabled, isDoomFrame(s),
                                  shadows, lights, s.transparency == Transparency::Oit);
@@ -248,7 +257,7 @@ bool ForwardPass::anyDoomMaterial(const FrameContext& frame)
     if (!scene) return false;
     const FrameSettings& s = frame.settings;
     return std::any_of(scene->materials().begin(), scene->materials().end(), [&](const MaterialBinding& m) {
-        return resolveShading(s.materialOverride, s.brdfGeometry, m.features).model == scene::ShadingModel::Doom;
+        return materialShading(s, m).model == scene::ShadingModel::Doom;
     });
 }
 
@@ -266,7 +275,7 @@ const std::vector<DrawProgram>& ForwardPass::prepareMaterials(const FrameContext
     const GpuScene* scene = frame.stores.scene.get();
     if (!scene) return r.materialPrograms;
     for (const MaterialBinding& m : scene->materials()) {
-        ForwardProgram& p = r.program(frame, m.features);
+        ForwardProgram& p = r.program(frame, m);
         const gl::Texture* dfg = p.readsDfg ? &frame.stores.ibl.dfg(frame.state(), p.shading) : nullptr;
         const gl::Texture* sheenAlbedo = p.readsSheenAlbedo ? &frame.stores.ibl.sheenAlbedo(frame.state()) : nullptr;
         r.materialPrograms.push_back({&p.program, p.model, p.normalMatrix, dfg, p.receiveShadows, sheenAlbedo});
