@@ -6,8 +6,8 @@
 // Record of slot s, from texel s * SPECULA_SHADOW_RECORD_TEXELS:
 //   texel 0: x kind (SPECULA_SHADOW_*), y view count, z light size (directional: tan of half
 //            the angular diameter; spot and point: radius in metres), w filter (SPECULA_SHADOW_FILTER_*)
-//   texel 1: x normal-offset bias (texels), y PCF radius (texels), z cascade blend (fraction of
-//            a cascade's depth range), w filter taps
+//   texel 1: x normal-offset bias (texels), y unused, z cascade blend (fraction of a cascade's
+//            depth range), w unused (the filter's size is compiled in: SHADOW_TENT, SHADOW_TAPS)
 //   texel 2: cascades' far view depths (metres), x..w
 //   then SPECULA_SHADOW_VIEW_TEXELS texels per view (cascade 0.., a spot's one, a point
 //   light's six faces +X −X +Y −Y +Z −Z):

@@ -45,8 +45,9 @@ constexpr uint64_t kDebugMask = field(kDebugShift, 5), kModelMask = field(kModel
                    kFresnelMask = field(kFresnelShift, 2), kDiffuseMask = field(kDiffuseShift, 2),
                    kShadowFilterMask = field(kShadowFilterShift, 2), kShadowTapsMask = field(kShadowTapsShift, 2),
                    kLightCountMask = field(kLightCountShift, kLightCountBits);
-// The shadow filter's field: PCF (the default) is 0 and has no define; the taps' field: 16 is 0.
-constexpr uint64_t kFilterHard = 1, kFilterPcss = 2, kTaps8 = 1, kTaps32 = 2;
+// The shadow filter's field: PCF (the default) is 0 and has no define; the size's field: the
+// default (PCF's 3 × 3 tent, PCSS's 16 taps) is 0.
+constexpr uint64_t kFilterHard = 1, kFilterPcss = 2, kTent5 = 1, kTaps32 = 2;
 template <typename E>
 constexpr uint64_t at(int shift, E value) { return uint64_t(value) << shift; }
 
@@ -103,7 +104,7 @@ constexpr std::array kTable = {
     VariantDefine{kShadowPoint, kShadowPoint, "SHADOW_POINT", K::FrameFeature},
     VariantDefine{kShadowFilterMask, at(kShadowFilterShift, kFilterHard), "SHADOW_FILTER_HARD", K::Shadow},
     VariantDefine{kShadowFilterMask, at(kShadowFilterShift, kFilterPcss), "SHADOW_FILTER_PCSS", K::Shadow},
-    VariantDefine{kShadowTapsMask, at(kShadowTapsShift, kTaps8), "SHADOW_TAPS 8", K::Shadow},
+    VariantDefine{kShadowTapsMask, at(kShadowTapsShift, kTent5), "SHADOW_TENT 5", K::Shadow},
     VariantDefine{kShadowTapsMask, at(kShadowTapsShift, kTaps32), "SHADOW_TAPS 32", K::Shadow},
     VariantDefine{SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE, SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE, "HAS_BASE_COLOR_TEXTURE", K::MaterialFeature},
     VariantDefine{SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE, SPECULA_MATERIAL_HAS_METALLIC_ROUGHNESS_TEXTURE,
@@ -217,8 +218,8 @@ ForwardVariant ForwardVariant::make(uint64_t features, const ResolvedShading& sh
         if (shadows.point) key |= kShadowPoint;
         if (shadows.filter == SPECULA_SHADOW_FILTER_HARD) key |= at(kShadowFilterShift, kFilterHard);
         if (shadows.filter == SPECULA_SHADOW_FILTER_PCSS) key |= at(kShadowFilterShift, kFilterPcss);
-        if (shadows.taps <= 8) key |= at(kShadowTapsShift, kTaps8);
-        if (shadows.taps >= 32) key |= at(kShadowTapsShift, kTaps32);
+        if (shadows.filter == SPECULA_SHADOW_FILTER_PCF && shadows.tent >= 5) key |= at(kShadowTapsShift, kTent5);
+        if (shadows.filter == SPECULA_SHADOW_FILTER_PCSS && shadows.taps >= 32) key |= at(kShadowTapsShift, kTaps32);
     }
     return {key};
 }

@@ -23,13 +23,14 @@ struct VariantDefine {
 };
 
 /// What this frame's shadow maps ask of the forward program (lights/shadow.glsl): which kinds
-/// of shadowed light there are, the filter and its taps. Compiled in, so that the program holds
+/// of shadowed light there are, the filter and its size. Compiled in, so that the program holds
 /// only the paths the frame uses — a CPU rasteriser (llvmpipe) runs every side of a branch.
 /// No kind: no SHADOWS variant at all.
 struct ShadowVariant {
     bool directional = false, spot = false, point = false;
     int filter = 1; ///< SPECULA_SHADOW_FILTER_* (shaders/shared/ShadowData.h): 0 hard, 1 PCF, 2 PCSS
-    int taps = 16;  ///< 8, 16 or 32
+    int taps = 16;  ///< PCSS's disc taps: 16 or 32
+    int tent = 3;   ///< PCF's tent, texels across: 3 or 5
     bool active() const { return directional || spot || point; }
     bool operator==(const ShadowVariant&) const = default;
 };

@@ -71,11 +71,13 @@ TEST(VariantKey, ShadowsCompileInOnlyTheKindsAndFilterTheFrameUses)
     using V = std::vector<std::string>;
     EXPECT_TRUE(with({}).empty()) << "no shadowed light: no SHADOWS variant, whatever the filter";
     EXPECT_TRUE(with({.filter = 2, .taps = 32}).empty());
-    // PCF with 16 taps is the default: no define of its own.
+    // PCF with its 3 × 3 tent is the default: no define of its own.
     EXPECT_EQ(with({.point = true}), (V{"SHADOWS", "SHADOW_POINT"}));
-    EXPECT_EQ(with({.directional = true, .spot = true, .filter = 0, .taps = 8}),
-              (V{"SHADOWS", "SHADOW_DIRECTIONAL", "SHADOW_SPOT", "SHADOW_FILTER_HARD", "SHADOW_TAPS 8"}));
-    EXPECT_EQ(with({.directional = true, .spot = true, .point = true, .filter = 2, .taps = 32}),
+    EXPECT_EQ(with({.point = true, .taps = 32}), (V{"SHADOWS", "SHADOW_POINT"})) << "PCF has no disc";
+    EXPECT_EQ(with({.spot = true, .tent = 5}), (V{"SHADOWS", "SHADOW_SPOT", "SHADOW_TENT 5"}));
+    EXPECT_EQ(with({.directional = true, .spot = true, .filter = 0, .taps = 32, .tent = 5}),
+              (V{"SHADOWS", "SHADOW_DIRECTIONAL", "SHADOW_SPOT", "SHADOW_FILTER_HARD"})) << "the hard filter has neither";
+    EXPECT_EQ(with({.directional = true, .spot = true, .point = true, .filter = 2, .taps = 32, .tent = 5}),
               (V{"SHADOWS", "SHADOW_DIRECTIONAL", "SHADOW_SPOT", "SHADOW_POINT", "SHADOW_FILTER_PCSS", "SHADOW_TAPS 32"}));
 }
 

@@ -31,18 +31,18 @@ struct QualityParams {
     int cascade; ///< a cascade's tile
     int maxTile; ///< a spot light's or a cube face's largest tile
     int minTile;
-    int taps;    ///< PCF taps
-    float radius; ///< PCF radius, texels
+    int tent;    ///< the PCF filter's tent, texels across (lights/shadow.glsl: 3 or 5)
+    int taps;    ///< PCSS's disc taps (16 or 32)
 };
 
 QualityParams qualityParams(ShadowQuality quality)
 {
     switch (quality) {
-    case ShadowQuality::Low: return {2048, 512, 512, 32, 8, 1.0f};
-    case ShadowQuality::Medium: return {4096, 1024, 1024, 64, 16, 1.5f};
-    case ShadowQuality::High: return {8192, 2048, 2048, 64, 32, 2.0f};
+    case ShadowQuality::Low: return {2048, 512, 512, 32, 3, 16};
+    case ShadowQuality::Medium: return {4096, 1024, 1024, 64, 3, 16};
+    case ShadowQuality::High: return {8192, 2048, 2048, 64, 5, 32};
     }
-    return {4096, 1024, 1024, 64, 16, 1.5f};
+    return {4096, 1024, 1024, 64, 3, 16};
 }
 
 int filterId(ShadowFilter filter)
@@ -401,7 +401,7 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
         const PlannedLight& light = r.planned[slot];
         glm::vec4* t = texels.data() + slot * SPECULA_SHADOW_RECORD_TEXELS;
         t[0] = glm::vec4(float(light.kind), float(light.views.size()), light.size, float(filterId(s.filter)));
-        t[1] = glm::vec4(s.normalBias, q.radius, blend, float(q.taps));
+        t[1] = glm::vec4(s.normalBias, 0.0f, blend, 0.0f);
         for (size_t c = 0; c < light.splits.size() && c < 4; ++c) t[2][int(c)] = light.splits[c];
         for (size_t v = 0; v < light.views.size(); ++v) {
             const ShadowView& view = light.views[v].view;
@@ -423,8 +423,7 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
     stats.cached = views - rendered;
     stats.atlasSize = q.atlas;
     if (r.planned.empty()) return {};
-    // PCSS filters its penumbra with at least 16 taps (its blocker search has 16).
-    r.variant = {.filter = filterId(s.filter), .taps = s.filter == ShadowFilter::Pcss ? std::max(q.taps, 16) : q.taps};
+    r.variant = {.filter = filterId(s.filter), .taps = q.taps, .tent = q.tent};
     for (const PlannedLight& light : r.planned) {
         r.variant.directional |= light.kind == SPECULA_SHADOW_DIRECTIONAL;
         r.variant.spot |= light.kind == SPECULA_SHADOW_SPOT;
