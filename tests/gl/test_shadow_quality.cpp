@@ -484,7 +484,6 @@ TEST_F(GlTest, CascadeShadowsStayPutWhenTheCameraMovesOrTurns)
     a.halfWidth = a.halfHeight = 0.6;
     a.width = a.height_px = 1024;
     render::FrameSettings settings = test::radianceFrame(a.width, a.height_px, test::Brdf::Exact);
-    settings.shadows.filter = ShadowFilter::Hard;
     settings.shadows.distance = 2.5f;
 
     TopDown moved = a;
@@ -508,51 +507,57 @@ TEST_F(GlTest, CascadeShadowsStayPutWhenTheCameraMovesOrTurns)
                     c.cascade, c.texel * 1e3, glm::dot(move, c.right) / c.texel, glm::dot(move, c.up) / c.texel);
     }
 
+    // The hard filter, and the default PCF tent (no per-pixel noise: it moves only with the map).
     render::Renderer renderer;
     renderer.setScene(buildScene(sc));
-    const Visibility va = renderVisibility(renderer, a, settings, "stable-a");
-    const Visibility vm = renderVisibility(renderer, moved, settings, "stable-moved");
-    const Visibility vt = renderVisibility(renderer, turned, settings, "stable-turned");
+    for (const ShadowFilter filter : {ShadowFilter::Hard, ShadowFilter::Pcf}) {
+        const std::string name = filter == ShadowFilter::Hard ? "hard" : "pcf";
+        SCOPED_TRACE(name);
+        settings.shadows.filter = filter;
+        const Visibility va = renderVisibility(renderer, a, settings, "stable-" + name + "-a");
+        const Visibility vm = renderVisibility(renderer, moved, settings, "stable-" + name + "-moved");
+        const Visibility vt = renderVisibility(renderer, turned, settings, "stable-" + name + "-turned");
 
-    int edges = 0;
-    for (float v : va.v) edges += v > 0.02f && v < 0.98f;
-    EXPECT_GE(edges, 200) << "too few shadow-edge pixels to tell";
+        int edges = 0;
+        for (float v : va.v) edges += v > 0.02f && v < 0.98f;
+        EXPECT_GE(edges, 200) << "too few shadow-edge pixels to tell";
 
-    auto compareViews = [&](const Visibility& other, const TopDown& camera, const char* what) {
-        SCOPED_TRACE(what);
-        int compared = 0, changed = 0;
-        double worst = 0.0;
-        std::string first;
-        ImageRGBA8 diff;
-        diff.width = other.width;
-        diff.height = other.height;
-        diff.pixels.assign(size_t(other.width * other.height) * 4, 0);
-        for (int j = 0; j < other.height; ++j)
-            for (int i = 0; i < other.width; ++i) {
-                const glm::dvec2 q = a.pixelOf(camera.at(i, j));
-                const int qi = int(std::lround(q.x)), qj = int(std::lround(q.y));
-                ASSERT_LT(std::abs(q.x - qi) + std::abs(q.y - qj), 1e-3) << "not at a pixel of the first view";
-                if (qi < 0 || qj < 0 || qi >= va.width || qj >= va.height) continue;
-                const float v0 = va(qi, qj), v1 = other(i, j);
-                if (v0 < 0.0f || v1 < 0.0f) continue;
-                ++compared;
-                const double d = std::abs(double(v1) - double(v0));
-                worst = std::max(worst, d);
-                uint8_t* px = &diff.pixels[(size_t(j) * size_t(other.width) + size_t(i)) * 4];
-                px[3] = 255;
-                px[1] = uint8_t(v1 * 100.0f);
-                if (d > 0.02) {
-                    px[0] = 255;
-                    if (changed++ == 0)
-                        first = "pixel (" + std::to_string(i) + ", " + std::to_string(j) + "): " + std::to_string(v1) +
-                                ", in the first view " + std::to_string(v0);
+        auto compareViews = [&](const Visibility& other, const TopDown& camera, const char* what) {
+            SCOPED_TRACE(what);
+            int compared = 0, changed = 0;
+            double worst = 0.0;
+            std::string first;
+            ImageRGBA8 diff;
+            diff.width = other.width;
+            diff.height = other.height;
+            diff.pixels.assign(size_t(other.width * other.height) * 4, 0);
+            for (int j = 0; j < other.height; ++j)
+                for (int i = 0; i < other.width; ++i) {
+                    const glm::dvec2 q = a.pixelOf(camera.at(i, j));
+                    const int qi = int(std::lround(q.x)), qj = int(std::lround(q.y));
+                    ASSERT_LT(std::abs(q.x - qi) + std::abs(q.y - qj), 1e-3) << "not at a pixel of the first view";
+                    if (qi < 0 || qj < 0 || qi >= va.width || qj >= va.height) continue;
+                    const float v0 = va(qi, qj), v1 = other(i, j);
+                    if (v0 < 0.0f || v1 < 0.0f) continue;
+                    ++compared;
+                    const double d = std::abs(double(v1) - double(v0));
+                    worst = std::max(worst, d);
+                    uint8_t* px = &diff.pixels[(size_t(j) * size_t(other.width) + size_t(i)) * 4];
+                    px[3] = 255;
+                    px[1] = uint8_t(v1 * 100.0f);
+                    if (d > 0.02) {
+                        px[0] = 255;
+                        if (changed++ == 0)
+                            first = "pixel (" + std::to_string(i) + ", " + std::to_string(j) + "): " + std::to_string(v1) +
+                                    ", in the first view " + std::to_string(v0);
+                    }
                 }
-            }
-        writePng(outputDir() / (std::string("stable-") + what + "-changes.png"), diff);
-        std::printf("  %s: %d pixels compared, %d changed, largest change %.4f\n", what, compared, changed, worst);
-        EXPECT_GT(compared, other.width * other.height / 2);
-        EXPECT_EQ(changed, 0) << first;
-    };
-    compareViews(vm, moved, "moved");
-    compareViews(vt, turned, "turned");
+            writePng(outputDir() / ("stable-" + name + "-" + what + "-changes.png"), diff);
+            std::printf("  %s, %s: %d pixels compared, %d changed, largest change %.4f\n", name.c_str(), what, compared, changed, worst);
+            EXPECT_GT(compared, other.width * other.height / 2);
+            EXPECT_EQ(changed, 0) << first;
+        };
+        compareViews(vm, moved, "moved");
+        compareViews(vt, turned, "turned");
+    }
 }
