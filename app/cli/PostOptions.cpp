@@ -36,7 +36,7 @@ void addPostOptions(CLI::App* command, setup::FrameOptions& options)
     command->add_option("--shadow-quality", options.shadowQuality, "shadow map resolution and kernel: low, medium (default), high")
         ->check(CLI::IsMember({"low", "medium", "high"}));
     command->add_option("--shadow-filter", options.shadowFilter,
-                        "shadow filter: hard, pcf (default: Vogel-disc PCF), pcss (soft shadows from the light's size)")
+                        "shadow filter: hard, pcf (default: a 3x3 tent of texel comparisons in 4 bilinear taps; high quality 5x5), pcss (soft shadows from the light's size)")
         ->check(CLI::IsMember({"hard", "pcf", "pcss"}));
 }
 
