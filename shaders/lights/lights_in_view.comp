@@ -1,9 +1,10 @@
 #version 450 core
 // Light culling, step 1 of 3 (render/passes/LightCullPass): the point and spot lights that
-// give light (shared/ClusterData.h, lightIsDark) and touch the view's frustum, as view-space CullLights in light order, and the directional
-// lights' indices (every cluster's, listed once at the start of the index list). One work
-// group: each invocation takes a run of lights, counts, a scan of the counts gives each run
-// its place, and the runs are written in order, so the result does not depend on scheduling.
+// give light (shared/ClusterData.h, lightIsDark) and touch the view's frustum, as view-space
+// CullLights in light order, and the directional lights' indices (every cluster's, listed once
+// at the start of the index list). One work group: each invocation takes a run of lights,
+// counts, a scan of the counts gives each run its place, and the runs are written in order, so
+// the result does not depend on scheduling.
 // shading/LightClusters.cpp's cullLights does the same on the CPU.
 #define SPECULA_LIGHTS_STORAGE
 #include "light_list.glsl"

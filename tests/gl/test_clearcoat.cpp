@@ -28,7 +28,6 @@
 using namespace specula;
 using specula::test::GlTest;
 using glm::dvec3;
-using specula::test::hitUnitSphere;
 using specula::test::pixelRay;
 
 using namespace specula::test::gltf;

@@ -20,8 +20,6 @@
 using namespace specula;
 using glm::dvec3;
 using specula::test::GlTest;
-using specula::test::hitUnitSphere;
-using specula::test::pixelRay;
 
 namespace {
 
