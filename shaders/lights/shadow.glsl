@@ -31,19 +31,26 @@ layout(binding = SPECULA_UNIT_SHADOW_RECORDS) uniform samplerBuffer shadowRecord
 uniform int uReceiveShadows = 1;
 
 struct ShadowViewData {
-    mat4 worldToAtlas;
-    vec4 rect;   // tile in atlas uv: min.xy, max.xy
-    vec4 params; // near, far, texel world size, orthographic
+    vec4 row0, row1, row2, row3; // world → atlas, by rows (orthographic: row3 = (0, 0, 0, 1))
+    vec4 rect;                   // tile in atlas uv: min.xy, max.xy
+    float texelWorld;            // world size of a texel (perspective: at depth 1)
+    int texel;                   // the view's first texel in the records
 };
 
-ShadowViewData shadowViewAt(int recordBase, int view)
+// A view's texels as the hard and PCF filters need them: an orthographic view (a cascade) has
+// no fourth row to read (`orthographic` is a constant where this is called).
+ShadowViewData shadowViewAt(int recordBase, int view, bool orthographic)
 {
     int t = recordBase + 3 + view * SPECULA_SHADOW_VIEW_TEXELS;
     ShadowViewData v;
-    v.worldToAtlas = mat4(texelFetch(shadowRecords, t), texelFetch(shadowRecords, t + 1), texelFetch(shadowRecords, t + 2),
-                          texelFetch(shadowRecords, t + 3));
-    v.rect = texelFetch(shadowRecords, t + 4);
-    v.params = texelFetch(shadowRecords, t + 5);
+    v.row0 = texelFetch(shadowRecords, t);
+    v.row1 = texelFetch(shadowRecords, t + 1);
+    v.row2 = texelFetch(shadowRecords, t + 2);
+    v.row3 = orthographic ? vec4(0.0, 0.0, 0.0, 1.0) : texelFetch(shadowRecords, t + 3);
+    vec4 tile = texelFetch(shadowRecords, t + 4);
+    v.rect = vec4(tile.xy, tile.xy + tile.z);
+    v.texelWorld = tile.w;
+    v.texel = t;
     return v;
 }
 
@@ -85,11 +92,12 @@ const vec2 kShadowDisc[32] = vec2[](
 #define kShadowDisc kVogel16
 #endif
 
-// The view depth in metres of window depth `z` of a view (linear for orthographic views).
-float shadowLinearDepth(ShadowViewData v, float z)
+// The view depth in metres of window depth `z` of a view (linear for orthographic views), from
+// the view's depth range (its texel 5: near, far, orthographic).
+float shadowLinearDepth(vec4 range, float z)
 {
-    float n = v.params.x, f = v.params.y;
-    return v.params.w > 0.5 ? n + z * (f - n) : n * f / (f - z * (f - n));
+    float n = range.x, f = range.y;
+    return range.z > 0.5 ? n + z * (f - n) : n * f / (f - z * (f - n));
 }
 
 #if !defined(SHADOW_TENT)
@@ -127,11 +135,11 @@ void shadowTentAxis(float s, out float w[SHADOW_TENT_TAPS], out float at[SHADOW_
 // Percentage-closer filtering with the tent (the "pcf" filter): SHADOW_TENT_TAPS² hardware-
 // compared bilinear taps, each clamped into the view's tile; no noise. A 3 × 3 tent blurs
 // about as much as 16 taps on a disc of 1.5 texels (σ 0.82 against 0.85 texel), in 4 taps.
-float shadowTent(ShadowViewData v, vec2 uv, float depth)
+float shadowTent(vec4 rect, vec2 uv, float depth)
 {
     vec2 size = vec2(textureSize(shadowAtlas, 0));
     vec2 texel = 1.0 / size;
-    vec2 lo = v.rect.xy + 0.5 * texel, hi = v.rect.zw - 0.5 * texel;
+    vec2 lo = rect.xy + 0.5 * texel, hi = rect.zw - 0.5 * texel;
     vec2 x = uv * size - 0.5; // texel centres at whole numbers
     vec2 base = floor(x);
     vec2 s = x - base;
@@ -146,52 +154,54 @@ float shadowTent(ShadowViewData v, vec2 uv, float depth)
     return lit * (1.0 / (total * total));
 }
 
-// The lit fraction at uv: one hardware-compared bilinear tap (the hard filter), or
-// percentage-closer filtering over a disc of `radius` texels (PCSS), SHADOW_TAPS such taps,
-// the disc turned by `rotation` (cos, sin). The four outermost taps go first: where they agree (all lit
-// or all in shadow) the pixel is done — the disc inside them almost always agrees too — and
-// only pixels in a penumbra pay for the rest.
-float shadowPcf(ShadowViewData v, vec2 uv, float depth, float radius, vec2 rotation)
+// The hard filter: one hardware-compared bilinear tap, clamped into the view's tile.
+float shadowHard(vec4 rect, vec2 uv, float depth)
 {
     vec2 texel = 1.0 / vec2(textureSize(shadowAtlas, 0));
-    vec2 lo = v.rect.xy + 0.5 * texel, hi = v.rect.zw - 0.5 * texel;
-#if defined(SHADOW_FILTER_HARD)
-    return texture(shadowAtlas, vec3(clamp(uv, lo, hi), depth));
-#else
+    return texture(shadowAtlas, vec3(clamp(uv, rect.xy + 0.5 * texel, rect.zw - 0.5 * texel), depth));
+}
+
+// PCSS's filter: percentage-closer filtering over a disc of `radius` texels, SHADOW_TAPS
+// hardware-compared bilinear taps, the disc turned by `rotation` (cos, sin). The four outermost
+// taps go first: where they agree (all lit or all in shadow) the pixel is done — the disc inside
+// them almost always agrees too — and only pixels in a penumbra pay for the rest.
+float shadowDisc(vec4 rect, vec2 uv, float depth, float radius, vec2 rotation)
+{
+    vec2 texel = 1.0 / vec2(textureSize(shadowAtlas, 0));
+    vec2 lo = rect.xy + 0.5 * texel, hi = rect.zw - 0.5 * texel;
     mat2 turn = mat2(rotation.x, rotation.y, -rotation.y, rotation.x) * radius;
     float lit = 0.0;
     for (int k = SHADOW_TAPS - 4; k < SHADOW_TAPS; ++k)
         lit += texture(shadowAtlas, vec3(clamp(uv + (turn * kShadowDisc[k]) * texel, lo, hi), depth));
-    // A loop, not an if: a CPU rasteriser runs both sides of a branch, but leaves a loop as
-    // soon as none of its pixels is still in it.
+    // The rest in a loop under the if: a CPU rasteriser runs both sides of an if, but leaves a
+    // loop as soon as none of its pixels is still in it.
     bool penumbra = lit > 0.0 && lit < 4.0;
     if (penumbra)
     for (int k = 0; k < SHADOW_TAPS - 4; ++k)
         lit += texture(shadowAtlas, vec3(clamp(uv + (turn * kShadowDisc[k]) * texel, lo, hi), depth));
     return penumbra ? lit * (1.0 / float(SHADOW_TAPS)) : lit * 0.25;
-#endif
 }
 
 // The light seen through one view: `p` already offset along the normal.
-float shadowInView(ShadowViewData v, vec3 p, vec4 record0, vec4 record1, vec2 rotation)
+float shadowInView(ShadowViewData v, vec3 p, int recordBase, vec2 rotation)
 {
-    vec4 c = v.worldToAtlas * vec4(p, 1.0);
-    vec3 s = c.xyz / c.w;
+    vec4 q = vec4(p, 1.0);
+    vec3 s = vec3(dot(v.row0, q), dot(v.row1, q), dot(v.row2, q)) / dot(v.row3, q);
     // Outside the view's depth range (beyond a cascade's far side) or its window (a Gouraud
     // vertex outside the camera's view, hence outside its cascade): nothing there casts.
     if (s.z >= 1.0 || any(lessThan(s.xy, v.rect.xy)) || any(greaterThan(s.xy, v.rect.zw))) return 1.0;
-    float radius = 0.0;
 #if defined(SHADOW_FILTER_PCSS)
     vec2 texel = 1.0 / vec2(textureSize(shadowAtlas, 0));
     vec2 lo = v.rect.xy + 0.5 * texel, hi = v.rect.zw - 0.5 * texel;
-    bool ortho = v.params.w > 0.5;
-    float receiver = shadowLinearDepth(v, s.z);
-    float size = record0.z;
+    vec4 range = texelFetch(shadowRecords, v.texel + 5);
+    bool ortho = range.z > 0.5;
+    float receiver = shadowLinearDepth(range, s.z);
+    float size = texelFetch(shadowRecords, recordBase + 2).x;
     // The texel's world size at the receiver; the region of the map whose blockers can
     // hide part of the light from the receiver (at most 32 texels).
-    float texelAtReceiver = ortho ? v.params.z : v.params.z * receiver;
-    float search = ortho ? size * (receiver - v.params.x) / v.params.z
-                         : size * (receiver - v.params.x) / (receiver * v.params.z * v.params.x);
+    float texelAtReceiver = ortho ? v.texelWorld : v.texelWorld * receiver;
+    float search = ortho ? size * (receiver - range.x) / v.texelWorld
+                         : size * (receiver - range.x) / (receiver * v.texelWorld * range.x);
     search = clamp(search, 1.0, 32.0);
     float blockers = 0.0, blockerDepth = 0.0;
     mat2 turn = mat2(rotation.x, rotation.y, -rotation.y, rotation.x) * search;
@@ -200,19 +210,19 @@ float shadowInView(ShadowViewData v, vec3 p, vec4 record0, vec4 record1, vec2 ro
         float z = textureLod(shadowDepth, q, 0.0).r;
         if (z < s.z) {
             blockers += 1.0;
-            blockerDepth += shadowLinearDepth(v, z);
+            blockerDepth += shadowLinearDepth(range, z);
         }
     }
     if (blockers == 0.0) return 1.0;
     blockerDepth /= blockers;
     // Similar triangles: the penumbra's full width on the receiver.
     float penumbra = ortho ? 2.0 * size * (receiver - blockerDepth) : 2.0 * size * (receiver - blockerDepth) / blockerDepth;
-    radius = clamp(0.5 * penumbra / texelAtReceiver, 0.5, 32.0);
-#endif
-#if defined(SHADOW_FILTER_PCSS) || defined(SHADOW_FILTER_HARD)
-    return shadowPcf(v, s.xy, s.z, radius, rotation);
+    float radius = clamp(0.5 * penumbra / texelAtReceiver, 0.5, 32.0);
+    return shadowDisc(v.rect, s.xy, s.z, radius, rotation);
+#elif defined(SHADOW_FILTER_HARD)
+    return shadowHard(v.rect, s.xy, s.z);
 #else
-    return shadowTent(v, s.xy, s.z);
+    return shadowTent(v.rect, s.xy, s.z);
 #endif
 }
 
@@ -225,7 +235,7 @@ int shadowCascade(GpuLight light, vec3 worldPosition)
     int base = slot * SPECULA_SHADOW_RECORD_TEXELS;
     vec4 record0 = texelFetch(shadowRecords, base);
     if (int(record0.x + 0.5) != SPECULA_SHADOW_DIRECTIONAL) return -2;
-    vec4 splits = texelFetch(shadowRecords, base + 2);
+    vec4 splits = texelFetch(shadowRecords, base + 1);
     float depth = -(frame.view * vec4(worldPosition, 1.0)).z;
     int count = int(record0.y + 0.5);
     for (int c = 0; c < count; ++c)
@@ -241,19 +251,18 @@ float shadowVisibility(GpuLight light, vec3 worldPosition, vec3 normal, vec3 l)
     if (slot < 0 || uReceiveShadows == 0) return 1.0;
     int base = slot * SPECULA_SHADOW_RECORD_TEXELS;
     vec4 record0 = texelFetch(shadowRecords, base);
-    vec4 record1 = texelFetch(shadowRecords, base + 1);
     int kind = int(record0.x + 0.5);
     float noise = shadowNoise(worldPosition);
     float angle = 6.28318531 * noise;
     vec2 rotation = vec2(cos(angle), sin(angle));
     float NoL = clamp(dot(normal, l), 0.0, 1.0);
-    float offsetTexels = record1.x * sqrt(1.0 - NoL * NoL);
+    float offsetTexels = record0.z * sqrt(1.0 - NoL * NoL);
 #if defined(SHADOW_DIRECTIONAL)
 #if defined(SHADOW_SPOT) || defined(SHADOW_POINT)
     if (kind == SPECULA_SHADOW_DIRECTIONAL)
 #endif
     {
-        vec4 splits = texelFetch(shadowRecords, base + 2);
+        vec4 splits = texelFetch(shadowRecords, base + 1);
         int count = int(record0.y + 0.5);
         float depth = -(frame.view * vec4(worldPosition, 1.0)).z;
         int cascade = 0;
@@ -263,11 +272,11 @@ float shadowVisibility(GpuLight light, vec3 worldPosition, vec3 normal, vec3 l)
         // dithering: a pixel reads the next cascade with the blend's weight as probability,
         // so that one lookup per light is made, not two.
         float begin = cascade == 0 ? 0.0 : splits[cascade - 1];
-        float blendStart = splits[cascade] - record1.z * (splits[cascade] - begin);
+        float blendStart = splits[cascade] - record0.w * (splits[cascade] - begin);
         float weight = (depth - blendStart) / max(splits[cascade] - blendStart, 1e-6);
         if (cascade + 1 < count && fract(noise * 7.0 + 0.5) < weight) ++cascade;
-        ShadowViewData v = shadowViewAt(base, cascade);
-        return shadowInView(v, worldPosition + normal * (offsetTexels * v.params.z), record0, record1, rotation);
+        ShadowViewData v = shadowViewAt(base, cascade, true);
+        return shadowInView(v, worldPosition + normal * (offsetTexels * v.texelWorld), base, rotation);
     }
 #endif
 #if defined(SHADOW_SPOT) || defined(SHADOW_POINT)
@@ -294,9 +303,9 @@ float shadowVisibility(GpuLight light, vec3 worldPosition, vec3 normal, vec3 l)
         viewDepth = dot(toPoint, light.directionType.xyz);
     }
 #endif
-    ShadowViewData v = shadowViewAt(base, view);
-    float texelAtPoint = v.params.z * max(viewDepth, v.params.x);
-    return shadowInView(v, worldPosition + normal * (offsetTexels * texelAtPoint), record0, record1, rotation);
+    ShadowViewData v = shadowViewAt(base, view, false);
+    float texelAtPoint = v.texelWorld * max(viewDepth, record0.w); // record0.w: the views' near plane
+    return shadowInView(v, worldPosition + normal * (offsetTexels * texelAtPoint), base, rotation);
 #else
     return 1.0;
 #endif

@@ -56,11 +56,8 @@ void main()
 {
     uint i = gl_GlobalInvocationID.x;
     if (i >= uint(queries.length())) return;
-    ShadowViewData v;
-    v.worldToAtlas = mat4(1.0);
-    v.rect = vec4(0.0, 0.0, 1.0, 1.0); // the whole map is the view's tile
-    v.params = vec4(0.0);
-    results[i] = shadowTent(v, queries[i].xy, queries[i].z);
+    // The whole map is the view's tile.
+    results[i] = shadowTent(vec4(0.0, 0.0, 1.0, 1.0), queries[i].xy, queries[i].z);
 }
 )";
     return root;

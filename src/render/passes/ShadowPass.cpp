@@ -400,17 +400,21 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
     for (size_t slot = 0; slot < r.planned.size(); ++slot) {
         const PlannedLight& light = r.planned[slot];
         glm::vec4* t = texels.data() + slot * SPECULA_SHADOW_RECORD_TEXELS;
-        t[0] = glm::vec4(float(light.kind), float(light.views.size()), light.size, float(filterId(s.filter)));
-        t[1] = glm::vec4(s.normalBias, 0.0f, blend, 0.0f);
-        for (size_t c = 0; c < light.splits.size() && c < 4; ++c) t[2][int(c)] = light.splits[c];
+        // A directional light's texel 0 w is the cascade blend; a spot or point light's, its
+        // views' near plane (one for all six faces), so that the lookup reads no more texels.
+        const bool directional = light.kind == SPECULA_SHADOW_DIRECTIONAL;
+        t[0] = glm::vec4(float(light.kind), float(light.views.size()), s.normalBias,
+                         directional ? blend : light.views.front().view.near);
+        for (size_t c = 0; c < light.splits.size() && c < 4; ++c) t[1][int(c)] = light.splits[c];
+        t[2] = glm::vec4(light.size, float(filterId(s.filter)), 0.0f, 0.0f);
         for (size_t v = 0; v < light.views.size(); ++v) {
             const ShadowView& view = light.views[v].view;
             glm::vec4* w = t + 3 + v * SPECULA_SHADOW_VIEW_TEXELS;
-            for (int c = 0; c < 4; ++c) w[c] = view.worldToAtlas[c];
+            const glm::mat4 rows = glm::transpose(view.worldToAtlas);
+            for (int c = 0; c < 4; ++c) w[c] = rows[c];
             const float inv = 1.0f / float(q.atlas);
-            w[4] = glm::vec4(float(view.tile.x) * inv, float(view.tile.y) * inv, float(view.tile.x + view.tile.size) * inv,
-                             float(view.tile.y + view.tile.size) * inv);
-            w[5] = glm::vec4(view.near, view.far, view.texelWorld, view.orthographic ? 1.0f : 0.0f);
+            w[4] = glm::vec4(float(view.tile.x) * inv, float(view.tile.y) * inv, float(view.tile.size) * inv, view.texelWorld);
+            w[5] = glm::vec4(view.near, view.far, view.orthographic ? 1.0f : 0.0f, 0.0f);
         }
         slots[size_t(light.light)] = int(slot);
     }
