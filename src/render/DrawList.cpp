@@ -142,12 +142,14 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
                 state.bindTexture(unit, *texture);
                 state.bindSampler(unit, m.samplers[slot]);
             }
-        } else if (m.features & SPECULA_MATERIAL_ALPHA_MASK) {
-            const size_t slot = size_t(TextureSlot::BaseColor);
-            if (m.textures[slot]) {
-                state.bindTexture(SPECULA_UNIT_BASE_COLOR, *m.textures[slot]);
-                state.bindSampler(SPECULA_UNIT_BASE_COLOR, m.samplers[slot]);
-            }
+        } else {
+            const auto bind = [&](TextureSlot slot) {
+                if (!m.textures[size_t(slot)]) return;
+                state.bindTexture(textureUnit(slot), *m.textures[size_t(slot)]);
+                state.bindSampler(textureUnit(slot), m.samplers[size_t(slot)]);
+            };
+            if (m.features & SPECULA_MATERIAL_ALPHA_MASK) bind(TextureSlot::BaseColor);
+            if (transmissionCutout(m)) bind(TextureSlot::Transmission);
         }
         program.program->set(program.model, item.world);
         program.program->set(program.normalMatrix, item.normalMatrix);

@@ -30,7 +30,7 @@ enum class DrawFilter : uint8_t {
     Opaque,        ///< opaque and alpha-masked surfaces without transmission
     Blended,       ///< alpha-blended surfaces without transmission
     Transmissive,  ///< surfaces with transmission (KHR_materials_transmission), blended or not
-    ShadowCasters, ///< surfaces that cast shadows (render::castsShadow: not blended, transmission below 0.5)
+    ShadowCasters, ///< surfaces that cast shadows (render::castsShadow: not blended, transmission below 0.5 somewhere)
 };
 
 struct DrawCommand {
@@ -54,7 +54,8 @@ struct DrawProgram {
 /// How a pass's draws bind their material.
 enum class MaterialTextures : uint8_t {
     All,              ///< every texture slot (flat defaults where a material has none)
-    BaseColorIfMasked ///< only a masked material's base colour (a depth pass's alpha test)
+    Cutouts ///< only what a depth pass's cutouts read: a masked material's base colour, a
+            ///< transmission cutout's transmission texture (render::transmissionCutout)
 };
 
 /// How a list's blended draws combine with the target.

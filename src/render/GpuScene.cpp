@@ -645,7 +645,14 @@ void GpuScene::updateCoverage(size_t record)
 bool castsShadow(const MaterialBinding& material)
 {
     // The declared mode: a blended material drawn opaque (alpha 1) still casts none.
-    return material.declaredAlphaMode != scene::AlphaMode::Blend && material.transmission < kTransmissionShadowLimit;
+    return material.declaredAlphaMode != scene::AlphaMode::Blend &&
+           (material.transmission < kTransmissionShadowLimit || transmissionCutout(material));
+}
+
+bool transmissionCutout(const MaterialBinding& material)
+{
+    return material.declaredAlphaMode != scene::AlphaMode::Blend && material.transmission >= kTransmissionShadowLimit &&
+           material.textures[size_t(TextureSlot::Transmission)] != nullptr;
 }
 
 void GpuScene::setShading(int material, const scene::MaterialShading& shading)

@@ -85,10 +85,15 @@ struct MaterialBinding {
 /// The shadow rule for surfaces light passes through (docs/transparency.md): a surface casts
 /// where it stops at least half of the light. Blended surfaces cast none (their alpha varies
 /// per texel and a depth map holds no fraction; nor do those drawn opaque for an alpha of 1:
-/// MaterialBinding::declaredAlphaMode); transmissive ones cast none from a
-/// transmission factor of 0.5 up, and cast like opaque ones below it.
+/// MaterialBinding::declaredAlphaMode); transmissive ones cast like opaque ones below a
+/// transmission of 0.5 and none from 0.5 up, texel by texel where a transmission texture
+/// scales the factor (transmissionCutout).
 constexpr float kTransmissionShadowLimit = 0.5f;
 bool castsShadow(const MaterialBinding& material);
+/// A caster whose transmission texture decides where it casts: its factor reaches the limit,
+/// so the shadow pass cuts out the texels where factor × texture (R) does too. (Below the
+/// limit the product is below it everywhere: the surface casts whole.)
+bool transmissionCutout(const MaterialBinding& material);
 
 struct DrawItem {
     int primitive = 0;

@@ -455,3 +455,98 @@ TEST_F(GlTest, ShadowAtlasViewShowsEachTileAtItsDepth)
     EXPECT_EQ(grey, (maxX - minX + 1) * (maxY - minY + 1)) << "the tile is one square of one grey";
     EXPECT_EQ(maxX - minX, maxY - minY);
 }
+
+// KHR_materials_transmission's texture decides texel by texel where a surface casts (the shadow
+// rule, render::transmissionCutout: where it stops at least half the light). A 3 m square 2 m
+// above the floor, transmission factor 1 and a 2 × 1 texture read nearest, whose left texel lets
+// nothing through (R 0) and whose right texel lets everything through (R 255), under a sun 60°
+// up: by an exact ray test the floor is in shadow where the ray to the sun crosses the left
+// half, and lit where it crosses the right half. Each floor pixel against the same frame with
+// shadows off: in the umbra at most 2 % of it, in the light within 1.5 %; pixels within 3 of a
+// change (the map's texels, the square's edges) are not compared. Broken on purpose
+// (2026-12-07, shader copies): without the shadow pass's cutout the clear half casts too (all
+// 490 pixels under it fail); with every texel cut out, as the rule before cast nothing from a
+// factor of 0.5 up, the opaque half casts none (all 490 umbra pixels fail).
+TEST_F(GlTest, TransmissionTextureDecidesWhereASurfaceCasts)
+{
+    test::ShadowPrimitives primitives;
+    primitives.light.type = scene::Light::Type::Directional;
+    primitives.light.intensity = 3.0f;
+    const double elevation = glm::radians(60.0);
+    const dvec3 toSun(0.0, std::sin(elevation), -std::cos(elevation)); // the shadow falls towards the camera
+    primitives.lightDirection = -glm::vec3(toSun);
+    scene::Scene s = test::buildShadowScene(primitives);
+    s.images.push_back({"half clear", 2, 1, 4, {0, 0, 0, 255, 255, 255, 255, 255}});
+    scene::Sampler nearest;
+    nearest.magFilter = nearest.minFilter = scene::Filter::Nearest;
+    nearest.mipmaps = false;
+    s.samplers.push_back(nearest);
+    scene::Material glass;
+    glass.baseColorFactor = glm::vec4(kBaseColor, 1.0f);
+    glass.roughnessFactor = 0.2f;
+    glass.transmissionFactor = 1.0f;
+    glass.transmissionTexture.image = int(s.images.size() - 1);
+    glass.transmissionTexture.sampler = int(s.samplers.size() - 1);
+    constexpr double kHeight = 2.0, kHalf = 1.5;
+    scene::addShape(s, scene::makePlane(float(2.0 * kHalf)), glass, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, float(kHeight), 0.0f)),
+                    "half-clear square");
+
+    constexpr int kWidth = 240, kHeight2 = 180, kBand = 3;
+    render::FrameSettings settings;
+    settings.width = kWidth;
+    settings.height = kHeight2;
+    settings.msaa = 1;
+    settings.tonemap = render::Tonemap::None;
+    settings.energyCompensation = false;
+    settings.shadows.filter = ShadowFilter::Hard;
+    const render::View view = render::lookAtView({0.0f, 8.0f, 10.0f}, glm::vec3(0.0f), {0, 1, 0}, glm::radians(50.0f),
+                                                 float(kWidth) / float(kHeight2), 0.1f, 100.0f);
+    render::Renderer renderer;
+    renderer.setScene(s);
+    renderer.render(view, settings);
+    const ImageFloat shadowed = renderer.readRadiance();
+    settings.shadows.enabled = false;
+    renderer.render(view, settings);
+    const ImageFloat unshadowed = renderer.readRadiance();
+
+    // Per pixel: -1 not the floor (the square, the sky); 0 floor in shadow; 1 floor lit through
+    // the clear half; 2 floor lit past the square.
+    const glm::dmat4 inverse = test::inverseViewProjection(view);
+    std::vector<int> category(size_t(kWidth * kHeight2), -1);
+    for (int y = 0; y < kHeight2; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const test::Ray ray = test::pixelRay(inverse, x, y, kWidth, kHeight2);
+            if (ray.direction.y >= 0.0) continue;
+            const dvec3 atSquare = ray.origin + ray.direction * ((kHeight - ray.origin.y) / ray.direction.y);
+            if (std::abs(atSquare.x) <= kHalf && std::abs(atSquare.z) <= kHalf) continue; // the square, seen first
+            const dvec3 p = ray.origin + ray.direction * (-ray.origin.y / ray.direction.y);
+            if (std::abs(p.x) > 0.5 * primitives.floorSize || std::abs(p.z) > 0.5 * primitives.floorSize) continue;
+            const dvec3 q = p + toSun * (kHeight / toSun.y); // where the ray to the sun meets the square's plane
+            const bool crosses = std::abs(q.x) <= kHalf && std::abs(q.z) <= kHalf;
+            category[size_t(y * kWidth + x)] = !crosses ? 2 : q.x < 0.0 ? 0 : 1;
+        }
+    int counts[3] = {0, 0, 0}, wrong[3] = {0, 0, 0};
+    for (int y = kBand; y < kHeight2 - kBand; ++y)
+        for (int x = kBand; x < kWidth - kBand; ++x) {
+            const int c = category[size_t(y * kWidth + x)];
+            if (c < 0) continue;
+            bool interior = true;
+            for (int dy = -kBand; dy <= kBand && interior; ++dy)
+                for (int dx = -kBand; dx <= kBand && interior; ++dx) interior = category[size_t((y + dy) * kWidth + x + dx)] == c;
+            if (!interior) continue;
+            const size_t at = (size_t(y) * kWidth + size_t(x)) * 4;
+            const double got = shadowed.pixels[at], lit = unshadowed.pixels[at];
+            ASSERT_GT(lit, 1e-3) << "the floor faces the sun";
+            ++counts[c];
+            const bool ok = c == 0 ? got <= 0.02 * lit : std::abs(got - lit) <= 0.015 * lit + 2e-3;
+            if (!ok && wrong[c]++ < 3)
+                ADD_FAILURE() << (c == 0 ? "umbra" : c == 1 ? "under the clear half" : "lit") << " pixel (" << x << ", " << y
+                              << "): " << got << ", unshadowed " << lit;
+        }
+    std::printf("transmission cutout: %d umbra, %d under the clear half, %d lit pixels compared; %d, %d, %d wrong\n", counts[0],
+                counts[1], counts[2], wrong[0], wrong[1], wrong[2]);
+    EXPECT_GT(counts[0], 100);
+    EXPECT_GT(counts[1], 100);
+    EXPECT_GT(counts[2], 100);
+    EXPECT_EQ(wrong[0] + wrong[1] + wrong[2], 0);
+}

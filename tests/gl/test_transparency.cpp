@@ -10,6 +10,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -376,7 +377,8 @@ TEST_F(GlTest, TransparencyTransmissionAndThicknessTexturesFromGltf)
 // STEP 0.25 -> 0.5 at 0.5 s, the attenuation colour LINEAR (0.9, 0.5, 0.2) -> (0.5, 0.9, 0.9), each
 // over 1 s: each pixel T (1 - F) c^(t/d) L with the posed values times the textures, and at 0 s
 // (factor 0) the quad is opaque: black, with no light, in front of the backdrop. The shadow rule
-// and the draw lists follow the factor (castsShadow: below 0.5 casts). The rest pose gives the
+// and the draw lists follow the factor (with its transmission texture the quad casts, cut out
+// texel by texel from a factor of 0.5 up: transmissionCutout). The rest pose gives the
 // file's values back. Broken on purpose (2026-12-07), channels off at 0.25 s / 0.75 s: the factor
 // not written into the record 21,672 / 21,672 (every channel of the quad); the thickness not
 // written 21,672 / 21,672; the distance not written 0 / 21,672 (its step comes at 0.5 s); the
@@ -446,7 +448,9 @@ TEST_F(GlTest, TransparencyAnimatedTransmissionAndVolume)
         const auto quadIn = [&](const render::DrawList& list) {
             return std::count_if(list.commands().begin(), list.commands().end(), [](const render::DrawCommand& c) { return c.material == 0; });
         };
-        EXPECT_EQ(quadIn(casters), factor < render::kTransmissionShadowLimit ? 1 : 0) << "t " << t;
+        // Its transmission texture: a caster at every factor, cut out texel by texel from 0.5 up.
+        EXPECT_EQ(quadIn(casters), 1) << "t " << t;
+        EXPECT_EQ(render::transmissionCutout(gpu.materials()[0]), factor >= render::kTransmissionShadowLimit) << "t " << t;
         EXPECT_EQ(quadIn(transmissive), factor > 0.0 ? 1 : 0) << "t " << t;
     }
 }
@@ -824,13 +828,17 @@ TEST_F(GlTest, TransparencyShadowCastersFollowTheRule)
                  {"blended of alpha 1 (drawn opaque, casts none)", scene::AlphaMode::Blend, 0.0f, false, 1.0f},
                  {"tinted glass", scene::AlphaMode::Opaque, 0.3f, true, 1.0f},
                  {"clear glass", scene::AlphaMode::Opaque, 0.5f, false, 1.0f},
-                 {"blended glass", scene::AlphaMode::Blend, 0.2f, false, 0.5f}};
+                 {"blended glass", scene::AlphaMode::Blend, 0.2f, false, 0.5f},
+                 {"clear glass with a transmission texture (cut out per texel)", scene::AlphaMode::Opaque, 1.0f, true, 1.0f},
+                 {"blended glass with a transmission texture", scene::AlphaMode::Blend, 1.0f, false, 0.5f}};
+    s.images.push_back({"transmission", 1, 1, 4, {255, 255, 255, 255}});
     for (const Kind& k : kinds) {
         scene::Material m;
         m.name = k.name;
         m.alphaMode = k.alphaMode;
         m.baseColorFactor.a = k.alpha;
         m.transmissionFactor = k.transmission;
+        if (std::string_view(k.name).find("texture") != std::string_view::npos) m.transmissionTexture.image = 0;
         scene::addShape(s, scene::makeCube(0.5f), m, glm::mat4(1.0f), k.name);
     }
     const render::GpuScene gpu(s);
@@ -847,7 +855,7 @@ TEST_F(GlTest, TransparencyShadowCastersFollowTheRule)
     EXPECT_EQ(casting, expected);
     // Transmissive draws have their own list (drawn after the opaque frame is copied), blended or not.
     const render::DrawList transmissive = render::DrawList::build(gpu, view, viewProjection, render::DrawFilter::Transmissive, programs);
-    EXPECT_EQ(transmissive.commands().size(), 3u);
+    EXPECT_EQ(transmissive.commands().size(), 5u);
     const render::DrawList opaque = render::DrawList::build(gpu, view, viewProjection, render::DrawFilter::Opaque, programs);
     EXPECT_EQ(opaque.commands().size(), 2u);
     const render::DrawList blended = render::DrawList::build(gpu, view, viewProjection, render::DrawFilter::Blended, programs);

@@ -125,21 +125,26 @@ struct ShadowPass::Impl {
     gl::Texture recordTexels;
     uint32_t retiredRecords = 0;
     std::vector<glm::vec4> uploaded; ///< the records' texels as last uploaded
-    std::map<uint32_t, CasterProgram> programs;
+    std::map<uint64_t, CasterProgram> programs;
     std::vector<DrawProgram> drawPrograms; ///< by material
     std::map<TileKey, uint64_t> tileContents; ///< what each tile of the atlas holds now
     std::vector<PlannedLight> planned;
     ShadowVariant variant; // of the last addTo: no kind when no light has a map
 
-    CasterProgram& casterProgram(uint32_t features)
+    CasterProgram& casterProgram(const MaterialBinding& m)
     {
-        uint32_t key = 0;
+        const uint64_t features = m.features;
+        uint64_t key = 0;
         std::vector<std::string> defines{"SHADOW_PASS"};
         if (features & SPECULA_MATERIAL_ALPHA_MASK) {
             key = features & (SPECULA_MATERIAL_ALPHA_MASK | SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE | SPECULA_MATERIAL_USE_VERTEX_COLOR);
             defines.push_back("ALPHA_MASK");
             if (features & SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE) defines.push_back("HAS_BASE_COLOR_TEXTURE");
             if (features & SPECULA_MATERIAL_USE_VERTEX_COLOR) defines.push_back("VERTEX_COLOR");
+        }
+        if (transmissionCutout(m)) {
+            key |= uint64_t(1) << 63; // above every feature bit
+            defines.push_back("TRANSMISSION_CUTOUT");
         }
         CasterProgram& p = programs[key];
         if (!p.program) {
@@ -199,7 +204,7 @@ struct ShadowPass::Impl {
         const DrawList casters = DrawList::build(scene, v.view.viewProjection, v.view.viewProjection, DrawFilter::ShadowCasters,
                                                  drawPrograms);
         frame.stats.triangles += casters.submit(state, scene, drawPrograms,
-                                                {.textures = MaterialTextures::BaseColorIfMasked,
+                                                {.textures = MaterialTextures::Cutouts,
                                                  .shadowCasters = true,
                                                  .depthBiasSlope = s.slopeBias,
                                                  .depthBiasConstant = s.constantBias});
@@ -441,7 +446,7 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
             r.drawPrograms.push_back({});
             continue;
         }
-        CasterProgram& p = r.casterProgram(m.features);
+        CasterProgram& p = r.casterProgram(m);
         r.drawPrograms.push_back({&p.program, p.model, p.normalMatrix, nullptr});
     }
 

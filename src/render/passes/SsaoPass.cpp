@@ -217,7 +217,7 @@ GraphTexture SsaoPass::addTo(FrameGraph& graph, const FrameContext& frame, const
             target.clearColor(0, 0.0f, 0.0f, 1.0f, 1.0f);
             target.clearDepth(1.0f);
             if (const GpuScene* scene = frame.stores.scene.get())
-                opaque.submit(state, *scene, r.programs, {.textures = MaterialTextures::BaseColorIfMasked});
+                opaque.submit(state, *scene, r.programs, {.textures = MaterialTextures::Cutouts});
         });
     graph.addPass(
         "ssao",
