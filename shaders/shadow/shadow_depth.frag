@@ -31,7 +31,7 @@ void main()
     if (alpha < material.alpha.x) discard;
 #endif
 #if defined(TRANSMISSION_CUTOUT)
-    // The limit is render::kTransmissionShadowLimit.
-    if (material.transmission.x * texture(uTransmissionTexture, textureUv(TEX_TRANSMISSION)).r >= 0.5) discard;
+    float transmission = material.transmission.x * texture(uTransmissionTexture, textureUv(TEX_TRANSMISSION)).r;
+    if (transmission >= SPECULA_TRANSMISSION_SHADOW_LIMIT) discard;
 #endif
 }

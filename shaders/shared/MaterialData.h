@@ -27,6 +27,9 @@ SPECULA_SHARED_BEGIN
 #define SPECULA_MATERIAL_SHEEN 8192u            // KHR_materials_sheen colour factor above 0
 #define SPECULA_MATERIAL_ANISOTROPY 16384u      // KHR_materials_anisotropy strength above 0 (GGX only)
 #define SPECULA_MATERIAL_IRIDESCENCE 32768u     // KHR_materials_iridescence factor above 0
+// The shadow rule for light that passes through (render::castsShadow): a surface casts where
+// its transmission (factor × texture) is below this.
+#define SPECULA_TRANSMISSION_SHADOW_LIMIT 0.5
 
 struct GpuMaterial {
     vec4 baseColorFactor;

@@ -88,7 +88,7 @@ struct MaterialBinding {
 /// MaterialBinding::declaredAlphaMode); transmissive ones cast like opaque ones below a
 /// transmission of 0.5 and none from 0.5 up, texel by texel where a transmission texture
 /// scales the factor (transmissionCutout).
-constexpr float kTransmissionShadowLimit = 0.5f;
+constexpr float kTransmissionShadowLimit = float(SPECULA_TRANSMISSION_SHADOW_LIMIT);
 bool castsShadow(const MaterialBinding& material);
 /// A caster whose transmission texture decides where it casts: its factor reaches the limit,
 /// so the shadow pass cuts out the texels where factor × texture (R) does too. (Below the

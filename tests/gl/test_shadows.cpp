@@ -505,6 +505,7 @@ TEST_F(GlTest, TransmissionTextureDecidesWhereASurfaceCasts)
     renderer.setScene(s);
     renderer.render(view, settings);
     const ImageFloat shadowed = renderer.readRadiance();
+    writePng(std::filesystem::path(SPECULA_TEST_OUTPUT_DIR) / "shadows" / "transmission-cutout-gpu.png", renderer.readImage());
     settings.shadows.enabled = false;
     renderer.render(view, settings);
     const ImageFloat unshadowed = renderer.readRadiance();
