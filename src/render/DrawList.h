@@ -53,7 +53,7 @@ struct DrawProgram {
 
 /// How a pass's draws bind their material.
 enum class MaterialTextures : uint8_t {
-    All,              ///< every texture slot (flat defaults where a material has none)
+    All,    ///< every texture slot (flat defaults where a material has none)
     Cutouts ///< only what a depth pass's cutouts read: a masked material's base colour, a
             ///< transmission cutout's transmission texture (render::transmissionCutout)
 };
