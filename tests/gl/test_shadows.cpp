@@ -113,6 +113,17 @@ Hit intersect(const ShadowScene& sc, const dvec3& o, const dvec3& d)
 
 scene::Scene buildScene(const ShadowScene& sc) { return specula::test::buildShadowScene(sc); }
 
+// Whether every pixel within `band` of (x, y) is in the same category as it: not near a change of
+// what the exact test sees (callers keep `band` pixels from the image's edges).
+bool interior(const std::vector<int>& category, int width, int x, int y, int band)
+{
+    const int c = category[size_t(y * width + x)];
+    for (int dy = -band; dy <= band; ++dy)
+        for (int dx = -band; dx <= band; ++dx)
+            if (category[size_t((y + dy) * width + x + dx)] != c) return false;
+    return true;
+}
+
 struct Comparison {
     int umbra = 0, umbraWrong = 0; ///< interior shadowed pixels, and those brighter than 2% of lit
     std::vector<int> umbraByCaster; ///< interior shadowed pixels by the primitive that casts them
@@ -187,11 +198,7 @@ Comparison compare(const ShadowScene& sc, const render::FrameSettings& base, int
     for (int y = band; y < h - band; ++y) {
         for (int x = band; x < w - band; ++x) {
             const int c = category[size_t(y * w + x)];
-            if (c < 0) continue;
-            bool interior = true;
-            for (int dy = -band; dy <= band && interior; ++dy)
-                for (int dx = -band; dx <= band && interior; ++dx) interior = category[size_t((y + dy) * w + x + dx)] == c;
-            if (!interior) continue;
+            if (c < 0 || !interior(category, w, x, y, band)) continue;
             const dvec3 expected = unshadowed[size_t(y * w + x)];
             if (expected.r < 1e-3) continue; // facing away: nothing to tell lit from shadowed
             const float* px = &image.pixels[(size_t(y) * size_t(w) + size_t(x)) * 4];
@@ -530,11 +537,7 @@ TEST_F(GlTest, TransmissionTextureDecidesWhereASurfaceCasts)
     for (int y = kBand; y < kHeight2 - kBand; ++y)
         for (int x = kBand; x < kWidth - kBand; ++x) {
             const int c = category[size_t(y * kWidth + x)];
-            if (c < 0) continue;
-            bool interior = true;
-            for (int dy = -kBand; dy <= kBand && interior; ++dy)
-                for (int dx = -kBand; dx <= kBand && interior; ++dx) interior = category[size_t((y + dy) * kWidth + x + dx)] == c;
-            if (!interior) continue;
+            if (c < 0 || !interior(category, kWidth, x, y, kBand)) continue;
             const size_t at = (size_t(y) * kWidth + size_t(x)) * 4;
             const double got = shadowed.pixels[at], lit = unshadowed.pixels[at];
             ASSERT_GT(lit, 1e-3) << "the floor faces the sun";
