@@ -12,7 +12,7 @@
 //              spot and point: the views' near plane (metres)
 //   texel 1: cascades' far view depths (metres), x..w
 //   texel 2: x light size (directional: tan of half the angular diameter; spot and point:
-//            radius in metres), y filter (SPECULA_SHADOW_FILTER_*; the shader's is compiled in)
+//            radius in metres); y..w unused (the filter is compiled in: SHADOW_FILTER_*)
 //   then SPECULA_SHADOW_VIEW_TEXELS texels per view (cascade 0.., a spot's one, a point
 //   light's six faces +X −X +Y −Y +Z −Z):
 //     0-3: rows of world → atlas (uv, window depth, w); an orthographic view's last row is

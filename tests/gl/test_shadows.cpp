@@ -494,20 +494,20 @@ TEST_F(GlTest, TransmissionTextureDecidesWhereASurfaceCasts)
     glass.transmissionFactor = 1.0f;
     glass.transmissionTexture.image = int(s.images.size() - 1);
     glass.transmissionTexture.sampler = int(s.samplers.size() - 1);
-    constexpr double kHeight = 2.0, kHalf = 1.5;
-    scene::addShape(s, scene::makePlane(float(2.0 * kHalf)), glass, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, float(kHeight), 0.0f)),
+    constexpr double kSquareHeight = 2.0, kHalf = 1.5;
+    scene::addShape(s, scene::makePlane(float(2.0 * kHalf)), glass, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, float(kSquareHeight), 0.0f)),
                     "half-clear square");
 
-    constexpr int kWidth = 240, kHeight2 = 180, kBand = 3;
+    constexpr int kImageWidth = 240, kImageHeight = 180, kBand = 3;
     render::FrameSettings settings;
-    settings.width = kWidth;
-    settings.height = kHeight2;
+    settings.width = kImageWidth;
+    settings.height = kImageHeight;
     settings.msaa = 1;
     settings.tonemap = render::Tonemap::None;
     settings.energyCompensation = false;
     settings.shadows.filter = ShadowFilter::Hard;
     const render::View view = render::lookAtView({0.0f, 8.0f, 10.0f}, glm::vec3(0.0f), {0, 1, 0}, glm::radians(50.0f),
-                                                 float(kWidth) / float(kHeight2), 0.1f, 100.0f);
+                                                 float(kImageWidth) / float(kImageHeight), 0.1f, 100.0f);
     render::Renderer renderer;
     renderer.setScene(s);
     renderer.render(view, settings);
@@ -520,25 +520,25 @@ TEST_F(GlTest, TransmissionTextureDecidesWhereASurfaceCasts)
     // Per pixel: -1 not the floor (the square, the sky); 0 floor in shadow; 1 floor lit through
     // the clear half; 2 floor lit past the square.
     const glm::dmat4 inverse = test::inverseViewProjection(view);
-    std::vector<int> category(size_t(kWidth * kHeight2), -1);
-    for (int y = 0; y < kHeight2; ++y)
-        for (int x = 0; x < kWidth; ++x) {
-            const test::Ray ray = test::pixelRay(inverse, x, y, kWidth, kHeight2);
+    std::vector<int> category(size_t(kImageWidth * kImageHeight), -1);
+    for (int y = 0; y < kImageHeight; ++y)
+        for (int x = 0; x < kImageWidth; ++x) {
+            const test::Ray ray = test::pixelRay(inverse, x, y, kImageWidth, kImageHeight);
             if (ray.direction.y >= 0.0) continue;
-            const dvec3 atSquare = ray.origin + ray.direction * ((kHeight - ray.origin.y) / ray.direction.y);
+            const dvec3 atSquare = ray.origin + ray.direction * ((kSquareHeight - ray.origin.y) / ray.direction.y);
             if (std::abs(atSquare.x) <= kHalf && std::abs(atSquare.z) <= kHalf) continue; // the square, seen first
             const dvec3 p = ray.origin + ray.direction * (-ray.origin.y / ray.direction.y);
             if (std::abs(p.x) > 0.5 * primitives.floorSize || std::abs(p.z) > 0.5 * primitives.floorSize) continue;
-            const dvec3 q = p + toSun * (kHeight / toSun.y); // where the ray to the sun meets the square's plane
+            const dvec3 q = p + toSun * (kSquareHeight / toSun.y); // where the ray to the sun meets the square's plane
             const bool crosses = std::abs(q.x) <= kHalf && std::abs(q.z) <= kHalf;
-            category[size_t(y * kWidth + x)] = !crosses ? 2 : q.x < 0.0 ? 0 : 1;
+            category[size_t(y * kImageWidth + x)] = !crosses ? 2 : q.x < 0.0 ? 0 : 1;
         }
     int counts[3] = {0, 0, 0}, wrong[3] = {0, 0, 0};
-    for (int y = kBand; y < kHeight2 - kBand; ++y)
-        for (int x = kBand; x < kWidth - kBand; ++x) {
-            const int c = category[size_t(y * kWidth + x)];
-            if (c < 0 || !interior(category, kWidth, x, y, kBand)) continue;
-            const size_t at = (size_t(y) * kWidth + size_t(x)) * 4;
+    for (int y = kBand; y < kImageHeight - kBand; ++y)
+        for (int x = kBand; x < kImageWidth - kBand; ++x) {
+            const int c = category[size_t(y * kImageWidth + x)];
+            if (c < 0 || !interior(category, kImageWidth, x, y, kBand)) continue;
+            const size_t at = (size_t(y) * kImageWidth + size_t(x)) * 4;
             const double got = shadowed.pixels[at], lit = unshadowed.pixels[at];
             ASSERT_GT(lit, 1e-3) << "the floor faces the sun";
             ++counts[c];

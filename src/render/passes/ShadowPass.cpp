@@ -411,7 +411,7 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
         t[0] = glm::vec4(float(light.kind), float(light.views.size()), s.normalBias,
                          directional ? blend : light.views.front().view.near);
         for (size_t c = 0; c < light.splits.size() && c < 4; ++c) t[1][int(c)] = light.splits[c];
-        t[2] = glm::vec4(light.size, float(filterId(s.filter)), 0.0f, 0.0f);
+        t[2] = glm::vec4(light.size, 0.0f, 0.0f, 0.0f);
         for (size_t v = 0; v < light.views.size(); ++v) {
             const ShadowView& view = light.views[v].view;
             glm::vec4* w = t + 3 + v * SPECULA_SHADOW_VIEW_TEXELS;
