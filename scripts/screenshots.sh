@@ -39,6 +39,8 @@ for model in ShadowsDirectional/shadows-directional ShadowsSpot/shadows-spot; do
   $S "$SHARED/models/$model.gltf" --env-color 0.1,0.1,0.1 --width 960 --height 540 -o "$OUT/$name.png"
   cp "$SHARED/models/$name/screenshot.png" "$OUT/$name-reference.png"
 done
+# Coloured and partial shadows (docs/shadows.md): glass, a glass volume and blended surfaces.
+$S tests/assets/transparency/transmission.json --width 960 --height 540 -o "$OUT/tinted-shadows.png"
 $S --debug-view shadow-atlas --width 540 --height 540 -o "$OUT/demo-shadow-atlas.png"
 $S --debug-view cascades --width 480 --height 270 -o "$OUT/demo-cascades.png"
 $S "$SHARED/models/BreakfastRoom/BreakfastRoom.gltf" --env none --width 480 --height 270 -o "$OUT/BreakfastRoom-sun.png"

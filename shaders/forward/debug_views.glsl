@@ -124,7 +124,7 @@ vec3 debugViewValue(vec3 baseColor, float metallic, float perceptualRoughness, v
         if (cascade < 0) return debugBytes(vec3(0.5));
         const vec3 colors[4] = vec3[4](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0), vec3(1.0, 1.0, 0.25));
         vec3 l = -light.directionType.xyz;
-        float lit = dot(n, l) > 0.0 ? shadowVisibility(light, vWorldPosition, n, l) : 0.0;
+        vec3 lit = dot(n, l) > 0.0 ? shadowVisibility(light, vWorldPosition, n, l) : vec3(0.0);
         return debugBytes(colors[cascade] * (0.35 + 0.65 * lit));
     }
     return debugBytes(vec3(0.5));

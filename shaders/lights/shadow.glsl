@@ -1,6 +1,6 @@
-// How much of a light reaches a shading point, in [0, 1]: 0 in its shadow, 1 in full light.
-// Every reflection model multiplies each light's contribution by it, so shadows come in here
-// and nowhere else. The includer declares the frame block (frame: the camera's view for the
+// How much of a light reaches a shading point, per channel in [0, 1]: 0 in its shadow, 1 in full
+// light, a colour behind glass. Every reflection model multiplies each light's contribution by
+// it, so shadows come in here and nowhere else. The includer declares the frame block (frame: the camera's view for the
 // cascades) before including this file.
 //
 // Without SHADOWS (no light of the frame has a map) it is exactly 1.0 and costs nothing.
@@ -17,6 +17,10 @@
 //     Soft Shadows"): a blocker search on raw depths, the penumbra from the light's size by
 //     similar triangles, then percentage-closer filtering of that width on a Vogel disc
 //     rotated per pixel (interleaved gradient noise, Jimenez 2014).
+//   - SHADOW_TINT (a frame with surfaces that let light through: render::tintsShadow): the
+//     filtered visibility times the tint map's colour, what those surfaces let through, where
+//     the point lies beyond the nearest of them (four texels each compared, then weighted
+//     bilinearly; the map at the atlas's resolution up to 4096², half of it above).
 // The filter, its taps and the kinds of shadowed light are compile-time (SHADOW_* defines of
 // shading/VariantKey.h): the program holds only the paths the frame uses.
 #include "../shared/Bindings.h"
@@ -29,6 +33,9 @@ layout(binding = SPECULA_UNIT_SHADOW_DEPTH) uniform sampler2D shadowDepth;
 layout(binding = SPECULA_UNIT_SHADOW_RECORDS) uniform samplerBuffer shadowRecords;
 // 0 for a draw whose model or shape does not receive shadows (receiveShadows: false).
 uniform int uReceiveShadows = 1;
+#if defined(SHADOW_TINT)
+layout(binding = SPECULA_UNIT_SHADOW_TINT) uniform sampler2D shadowTint;
+#endif
 
 struct ShadowViewData {
     vec4 row0, row1, row2, row3; // world → atlas, by rows (orthographic: row3 = (0, 0, 0, 1))
@@ -182,14 +189,33 @@ float shadowDisc(vec4 rect, vec2 uv, float depth, float radius, vec2 rotation)
     return penumbra ? lit * (1.0 / float(SHADOW_TAPS)) : lit * 0.25;
 }
 
-// The light seen through one view: `p` already offset along the normal.
-float shadowInView(ShadowViewData v, vec3 p, int recordBase, vec2 rotation)
+#if defined(SHADOW_TINT)
+// One texel of the tint map: what the surfaces over it let through where `depth` lies beyond the
+// nearest of them (the map's alpha), white elsewhere.
+vec3 shadowTintTexel(ivec2 texel, ivec2 lo, ivec2 hi, float depth)
 {
-    vec4 q = vec4(p, 1.0);
-    vec3 s = vec3(dot(v.row0, q), dot(v.row1, q), dot(v.row2, q)) / dot(v.row3, q);
-    // Outside the view's depth range (beyond a cascade's far side) or its window (a Gouraud
-    // vertex outside the camera's view, hence outside its cascade): nothing there casts.
-    if (s.z >= 1.0 || any(lessThan(s.xy, v.rect.xy)) || any(greaterThan(s.xy, v.rect.zw))) return 1.0;
+    vec4 tint = texelFetch(shadowTint, clamp(texel, lo, hi), 0);
+    return depth > tint.a ? tint.rgb : vec3(1.0);
+}
+
+// The tint at atlas point `uv`: the four nearest texels each compared with `depth`, then
+// weighted bilinearly (as percentage-closer filtering does), so that the tint's edges are
+// smooth where a filtered depth would cut them along the texels; texels from the view's tile.
+vec3 shadowTintAt(vec4 rect, vec2 uv, float depth)
+{
+    vec2 size = vec2(textureSize(shadowTint, 0));
+    ivec2 lo = ivec2(rect.xy * size + 0.5), hi = ivec2(rect.zw * size - 0.5);
+    vec2 x = uv * size - 0.5;
+    vec2 f = fract(x);
+    ivec2 t = ivec2(floor(x));
+    return mix(mix(shadowTintTexel(t, lo, hi, depth), shadowTintTexel(t + ivec2(1, 0), lo, hi, depth), f.x),
+               mix(shadowTintTexel(t + ivec2(0, 1), lo, hi, depth), shadowTintTexel(t + ivec2(1, 1), lo, hi, depth), f.x), f.y);
+}
+#endif
+
+// The filtered depth test at atlas point s (xy in the view's tile, z its depth).
+float shadowFiltered(ShadowViewData v, vec3 s, int recordBase, vec2 rotation)
+{
 #if defined(SHADOW_FILTER_PCSS)
     vec2 texel = 1.0 / vec2(textureSize(shadowAtlas, 0));
     vec2 lo = v.rect.xy + 0.5 * texel, hi = v.rect.zw - 0.5 * texel;
@@ -226,6 +252,22 @@ float shadowInView(ShadowViewData v, vec3 p, int recordBase, vec2 rotation)
 #endif
 }
 
+// The light seen through one view: `p` already offset along the normal.
+vec3 shadowInView(ShadowViewData v, vec3 p, int recordBase, vec2 rotation)
+{
+    vec4 q = vec4(p, 1.0);
+    vec3 s = vec3(dot(v.row0, q), dot(v.row1, q), dot(v.row2, q)) / dot(v.row3, q);
+    // Outside the view's depth range (beyond a cascade's far side) or its window (a Gouraud
+    // vertex outside the camera's view, hence outside its cascade): nothing there casts.
+    if (s.z >= 1.0 || any(lessThan(s.xy, v.rect.xy)) || any(greaterThan(s.xy, v.rect.zw))) return vec3(1.0);
+    float lit = shadowFiltered(v, s, recordBase, rotation);
+#if defined(SHADOW_TINT)
+    return lit * shadowTintAt(v.rect, s.xy, s.z);
+#else
+    return vec3(lit);
+#endif
+}
+
 // The cascade of a directional light's map at `worldPosition` (0..count-1); -1 beyond the
 // shadow distance; -2 when the light has no cascades (the cascades debug view).
 int shadowCascade(GpuLight light, vec3 worldPosition)
@@ -245,10 +287,10 @@ int shadowCascade(GpuLight light, vec3 worldPosition)
 
 // Only the kinds of shadowed light the frame has are compiled in (SHADOW_DIRECTIONAL,
 // SHADOW_SPOT, SHADOW_POINT: shading/VariantKey.h).
-float shadowVisibility(GpuLight light, vec3 worldPosition, vec3 normal, vec3 l)
+vec3 shadowVisibility(GpuLight light, vec3 worldPosition, vec3 normal, vec3 l)
 {
     int slot = int(light.spot.z + 0.5) - 1;
-    if (slot < 0 || uReceiveShadows == 0) return 1.0;
+    if (slot < 0 || uReceiveShadows == 0) return vec3(1.0);
     int base = slot * SPECULA_SHADOW_RECORD_TEXELS;
     vec4 record0 = texelFetch(shadowRecords, base);
     int kind = int(record0.x + 0.5);
@@ -267,7 +309,7 @@ float shadowVisibility(GpuLight light, vec3 worldPosition, vec3 normal, vec3 l)
         float depth = -(frame.view * vec4(worldPosition, 1.0)).z;
         int cascade = 0;
         while (cascade < count && depth > splits[cascade]) ++cascade;
-        if (cascade >= count) return 1.0; // beyond the shadow distance
+        if (cascade >= count) return vec3(1.0); // beyond the shadow distance
         // Over the last part of a cascade's range, blend into the next one (no seam) by
         // dithering: a pixel reads the next cascade with the blend's weight as probability,
         // so that one lookup per light is made, not two.
@@ -307,13 +349,13 @@ float shadowVisibility(GpuLight light, vec3 worldPosition, vec3 normal, vec3 l)
     float texelAtPoint = v.texelWorld * max(viewDepth, record0.w); // record0.w: the views' near plane
     return shadowInView(v, worldPosition + normal * (offsetTexels * texelAtPoint), base, rotation);
 #else
-    return 1.0;
+    return vec3(1.0);
 #endif
 }
 #else
-float shadowVisibility(GpuLight light, vec3 worldPosition, vec3 normal, vec3 l)
+vec3 shadowVisibility(GpuLight light, vec3 worldPosition, vec3 normal, vec3 l)
 {
-    return 1.0;
+    return vec3(1.0);
 }
 
 int shadowCascade(GpuLight light, vec3 worldPosition)

@@ -60,6 +60,7 @@
 #define SPECULA_UNIT_THICKNESS 33           // KHR_materials_volume's
 #define SPECULA_UNIT_DIFFUSE_TRANSMISSION 34       // KHR_materials_diffuse_transmission's two textures
 #define SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR 35 // (forward pass, DIFFUSE_TRANSMISSION_TEXTURES variant)
+#define SPECULA_UNIT_SHADOW_TINT 36         // what surfaces over a shadow texel let through, and the nearest one's depth (lights/shadow.glsl, SHADOW_TINT)
 #define SPECULA_UNIT_SSAO 12             // forward pass: the blurred ambient occlusion
 #define SPECULA_BINDING_SSAO 5           // uniform buffer: SsaoData
 #define SPECULA_BINDING_EXPOSURE_PARAMS 6 // uniform buffer: ExposureParams

@@ -182,6 +182,8 @@ void State::apply(const PipelineDesc& p)
         }
     }
     if (first || p.blend != mPipeline.blend) {
+        // Only the tint map's mode takes the minimum of the alphas.
+        if (first || mPipeline.blend == BlendMode::ShadowTint) glBlendEquation(GL_FUNC_ADD);
         switch (p.blend) {
         case BlendMode::None: glDisable(GL_BLEND); break;
         case BlendMode::Alpha:
@@ -201,6 +203,11 @@ void State::apply(const PipelineDesc& p)
             glEnable(GL_BLEND);
             glBlendFunci(0, GL_ONE, GL_ONE);
             glBlendFunci(1, GL_ZERO, GL_ONE_MINUS_SRC_COLOR);
+            break;
+        case BlendMode::ShadowTint:
+            glEnable(GL_BLEND);
+            glBlendFuncSeparate(GL_DST_COLOR, GL_ZERO, GL_ONE, GL_ONE);
+            glBlendEquationSeparate(GL_FUNC_ADD, GL_MIN);
             break;
         }
     }

@@ -21,7 +21,9 @@ enum class PrimitiveType : uint8_t { Triangles, Lines, Points };
 /// WeightedOit: weighted blended order-independent transparency's two targets (McGuire &
 /// Bavoil 2013): attachment 0 sums (ONE, ONE), attachment 1 multiplies by 1 − source (ZERO,
 /// ONE_MINUS_SRC_COLOR).
-enum class BlendMode : uint8_t { None, Alpha, PremultipliedAlpha, Additive, WeightedOit };
+/// ShadowTint: colour multiplied (dst × src), alpha the minimum of the two (the shadow pass's
+/// tint map: render/passes/ShadowPass).
+enum class BlendMode : uint8_t { None, Alpha, PremultipliedAlpha, Additive, WeightedOit, ShadowTint };
 
 enum class ImageAccess : uint8_t { ReadOnly, WriteOnly, ReadWrite };
 
@@ -101,7 +103,7 @@ public:
     void resetCounters() { mDrawCalls = 0; }
 
 private:
-    static constexpr int kUnits = 36; // units up to SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR (shaders/shared/Bindings.h)
+    static constexpr int kUnits = 37; // units up to SPECULA_UNIT_SHADOW_TINT (shaders/shared/Bindings.h)
     uint32_t mProgram = ~0u;
     uint32_t mVertexArray = ~0u;
     uint32_t mFramebuffer = ~0u;

@@ -67,6 +67,9 @@ DrawList DrawList::build(const GpuScene& scene, const glm::mat4& view, const glm
             // A line or a point stops no light (it has no area).
             if (!castsShadow(material) || !item.castShadows || p.topology != scene::Topology::Triangles) continue;
             break;
+        case DrawFilter::ShadowTinters:
+            if (!tintsShadow(material) || !item.castShadows || p.topology != scene::Topology::Triangles) continue;
+            break;
         }
         const scene::Bounds world = p.bounds.transformed(item.world);
         if (!frustum.intersects(world)) continue;
@@ -130,6 +133,10 @@ size_t DrawList::submit(gl::State& state, const GpuScene& scene, const std::vect
             backFacesFirst = m.doubleSided && options.blendOutput == BlendOutput::Premultiplied;
         }
         if (backFacesFirst) pipeline.cull = gl::CullMode::Front;
+        if (options.shadowTint) {
+            pipeline.blend = gl::BlendMode::ShadowTint;
+            pipeline.noDepthTest = pipeline.noDepthWrite = true;
+        }
         state.apply(pipeline);
         if (options.textures == MaterialTextures::All) {
             // An extension's slots only for the variant that samples them.

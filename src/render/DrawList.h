@@ -31,6 +31,7 @@ enum class DrawFilter : uint8_t {
     Blended,       ///< alpha-blended surfaces without transmission
     Transmissive,  ///< surfaces with transmission (KHR_materials_transmission), blended or not
     ShadowCasters, ///< surfaces that cast shadows (render::castsShadow: not blended, transmission below 0.5 somewhere)
+    ShadowTinters, ///< surfaces that let light through, coloured or in part (render::tintsShadow)
 };
 
 struct DrawCommand {
@@ -76,6 +77,9 @@ struct SubmitOptions {
     /// A shadow pass: every face drawn (so that open and double-sided meshes cast from either
     /// side), with this slope-scaled and constant depth bias.
     bool shadowCasters = false;
+    /// With shadowCasters: the tint map's draws (ShadowPass), blended by gl::BlendMode::ShadowTint
+    /// with no depth test or write.
+    bool shadowTint = false;
     float depthBiasSlope = 0.0f;
     float depthBiasConstant = 0.0f;
 };

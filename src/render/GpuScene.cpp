@@ -655,6 +655,14 @@ bool transmissionCutout(const MaterialBinding& material)
            material.textures[size_t(TextureSlot::Transmission)] != nullptr;
 }
 
+bool tintsShadow(const MaterialBinding& material)
+{
+    // A blended material of alpha 1 wherever it is drawn (drawn opaque: MaterialBinding::alphaMode)
+    // lets nothing through and casts nothing, as before: files mark lamps so.
+    const bool blended = material.declaredAlphaMode == scene::AlphaMode::Blend;
+    return (blended && material.alphaMode == scene::AlphaMode::Blend) || material.transmission >= kTransmissionShadowLimit;
+}
+
 void GpuScene::setShading(int material, const scene::MaterialShading& shading)
 {
     for (size_t record = 0; record < mMaterials.size(); ++record) {

@@ -83,17 +83,24 @@ struct MaterialBinding {
 };
 
 /// The shadow rule for surfaces light passes through (docs/transparency.md): a surface casts
-/// where it stops at least half of the light. Blended surfaces cast none (their alpha varies
-/// per texel and a depth map holds no fraction; nor do those drawn opaque for an alpha of 1:
-/// MaterialBinding::declaredAlphaMode); transmissive ones cast like opaque ones below a
-/// transmission of 0.5 and none from 0.5 up, texel by texel where a transmission texture
-/// scales the factor (transmissionCutout).
+/// into the depth map where it stops at least half of the light. Blended surfaces cast none
+/// there (their alpha varies per texel and a depth map holds no fraction; nor do those drawn
+/// opaque for an alpha of 1: MaterialBinding::declaredAlphaMode); transmissive ones cast like
+/// opaque ones below a transmission of 0.5 and none from 0.5 up, texel by texel where a
+/// transmission texture scales the factor (transmissionCutout). What the others let through
+/// tints the light beyond them (tintsShadow).
 constexpr float kTransmissionShadowLimit = float(SPECULA_TRANSMISSION_SHADOW_LIMIT);
 bool castsShadow(const MaterialBinding& material);
 /// A caster whose transmission texture decides where it casts: its factor reaches the limit,
 /// so the shadow pass cuts out the texels where factor × texture (R) does too. (Below the
 /// limit the product is below it everywhere: the surface casts whole.)
 bool transmissionCutout(const MaterialBinding& material);
+/// A surface that lets light through, coloured or in part, into the shadow pass's tint map
+/// (lights/shadow.glsl): blended ones (a coverage of alpha) and those whose transmission
+/// reaches the limit somewhere (the transmitted light tinted by the base colour and the
+/// volume's attenuation). Shadow maps hold no fraction; the tint map holds what such surfaces
+/// let through and the nearest one's depth.
+bool tintsShadow(const MaterialBinding& material);
 
 struct DrawItem {
     int primitive = 0;

@@ -207,13 +207,14 @@ Renderer::Renderer() : mImpl(std::make_unique<Impl>())
         throw Error("this OpenGL implementation has {} texture units; Specula needs {}", gl::maxTextureUnits(),
                     SPECULA_UNIT_RESIDUAL_PREFILTERED + 1);
     // The extension textures' units above the fragment stage's count (shaders/shared/Bindings.h).
-    static_assert(SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR > SPECULA_UNIT_DIFFUSE_TRANSMISSION &&
+    static_assert(SPECULA_UNIT_SHADOW_TINT > SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR &&
+                  SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR > SPECULA_UNIT_DIFFUSE_TRANSMISSION &&
                   SPECULA_UNIT_DIFFUSE_TRANSMISSION > SPECULA_UNIT_THICKNESS &&
                   SPECULA_UNIT_THICKNESS > SPECULA_UNIT_TRANSMISSION_FACTOR && SPECULA_UNIT_TRANSMISSION_FACTOR > SPECULA_UNIT_SPECULAR_COLOR &&
                   SPECULA_UNIT_SPECULAR_COLOR > SPECULA_UNIT_SPECULAR && SPECULA_UNIT_SPECULAR > SPECULA_UNIT_RESIDUAL_PREFILTERED);
-    if (gl::maxCombinedTextureUnits() <= SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR)
+    if (gl::maxCombinedTextureUnits() <= SPECULA_UNIT_SHADOW_TINT)
         throw Error("this OpenGL implementation has {} combined texture units; Specula needs {}", gl::maxCombinedTextureUnits(),
-                    SPECULA_UNIT_DIFFUSE_TRANSMISSION_COLOR + 1);
+                    SPECULA_UNIT_SHADOW_TINT + 1);
 }
 Renderer::~Renderer() = default;
 

@@ -90,6 +90,8 @@ constexpr SettingField<ShadowSettings> kShadows[] = {
     {.name = "lightSize", .member = &ShadowSettings::lightSize, .help = "scale of every light's size (PCSS penumbrae)",
      .range = Range::nonNegative(), .slider = Range::between(0, 10)},
     {.name = "cache", .member = &ShadowSettings::cache, .help = "keep maps whose lights and casters did not change"},
+    {.name = "tint", .member = &ShadowSettings::tint,
+     .help = "coloured and partial shadows from glass and blended surfaces (the tint map)"},
 };
 
 } // namespace

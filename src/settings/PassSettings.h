@@ -95,6 +95,10 @@ struct ShadowSettings {
     float lightSize = 1.0f;
     /// Keep a map while nothing in it changed; off: every map is drawn every frame (to measure).
     bool cache = true;
+    /// Coloured and partial shadows from surfaces that let light through (the tint map:
+    /// render::tintsShadow); off: they cast none, and frames skip its lookup (on llvmpipe about
+    /// a third of the demo's frame, docs/shadows.md).
+    bool tint = true;
     ShadowQuality quality = ShadowQuality::Medium;
     ShadowFilter filter = ShadowFilter::Pcf;
 };

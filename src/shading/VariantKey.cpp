@@ -31,6 +31,8 @@ constexpr uint64_t kDispersion = uint64_t(1) << 46;
 constexpr uint64_t kSpecularTextures = uint64_t(1) << 57, kTransmissionTextures = uint64_t(1) << 58;
 // KHR_materials_diffuse_transmission's lobe and its textures.
 constexpr uint64_t kDiffuseTransmission = uint64_t(1) << 59, kDiffuseTransmissionTextures = uint64_t(1) << 60;
+// The shadows' tint map (surfaces that let light through cast coloured or partial shadows).
+constexpr uint64_t kShadowTint = uint64_t(1) << 61;
 // The kinds of light a frame has not; then LIGHT_CONSTANTS (bit 19: the debug view's field was
 // there while it had 4 bits).
 constexpr uint64_t kNoDirectional = 1u << 16, kNoPoint = 1u << 17, kNoSpot = 1u << 18, kLightConstants = 1u << 19;
@@ -102,6 +104,7 @@ constexpr std::array kTable = {
     VariantDefine{kShadowDirectional, kShadowDirectional, "SHADOW_DIRECTIONAL", K::FrameFeature},
     VariantDefine{kShadowSpot, kShadowSpot, "SHADOW_SPOT", K::FrameFeature},
     VariantDefine{kShadowPoint, kShadowPoint, "SHADOW_POINT", K::FrameFeature},
+    VariantDefine{kShadowTint, kShadowTint, "SHADOW_TINT", K::FrameFeature},
     VariantDefine{kShadowFilterMask, at(kShadowFilterShift, kFilterHard), "SHADOW_FILTER_HARD", K::Shadow},
     VariantDefine{kShadowFilterMask, at(kShadowFilterShift, kFilterPcss), "SHADOW_FILTER_PCSS", K::Shadow},
     VariantDefine{kShadowTapsMask, at(kShadowTapsShift, kTent5), "SHADOW_TENT 5", K::Shadow},
@@ -216,6 +219,7 @@ ForwardVariant ForwardVariant::make(uint64_t features, const ResolvedShading& sh
         if (shadows.directional) key |= kShadowDirectional;
         if (shadows.spot) key |= kShadowSpot;
         if (shadows.point) key |= kShadowPoint;
+        if (shadows.tint) key |= kShadowTint;
         if (shadows.filter == SPECULA_SHADOW_FILTER_HARD) key |= at(kShadowFilterShift, kFilterHard);
         if (shadows.filter == SPECULA_SHADOW_FILTER_PCSS) key |= at(kShadowFilterShift, kFilterPcss);
         if (shadows.filter == SPECULA_SHADOW_FILTER_PCF && shadows.tent >= 5) key |= at(kShadowTapsShift, kTent5);

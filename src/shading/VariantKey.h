@@ -31,6 +31,7 @@ struct ShadowVariant {
     int filter = 1; ///< SPECULA_SHADOW_FILTER_* (shaders/shared/ShadowData.h): 0 hard, 1 PCF, 2 PCSS
     int taps = 16;  ///< PCSS's disc taps: 16 or 32
     int tent = 3;   ///< PCF's tent, texels across: 3 or 5
+    bool tint = false; ///< SHADOW_TINT: the tint map of surfaces that let light through (render::tintsShadow)
     bool active() const { return directional || spot || point; }
     bool operator==(const ShadowVariant&) const = default;
 };

@@ -468,8 +468,9 @@ TEST_F(GlTest, ShadowAtlasViewShowsEachTileAtItsDepth)
 // above the floor, transmission factor 1 and a 2 × 1 texture read nearest, whose left texel lets
 // nothing through (R 0) and whose right texel lets everything through (R 255), under a sun 60°
 // up: by an exact ray test the floor is in shadow where the ray to the sun crosses the left
-// half, and lit where it crosses the right half. Each floor pixel against the same frame with
-// shadows off: in the umbra at most 2 % of it, in the light within 1.5 %; pixels within 3 of a
+// half, and lit through its base colour where it crosses the right half (the tint map). Each
+// floor pixel against the same frame with shadows off: in the umbra at most 2 % of it, in the
+// light (times the glass's colour under the clear half) within 1.5 %; pixels within 3 of a
 // change (the map's texels, the square's edges) are not compared. Broken on purpose
 // (2026-12-07, shader copies): without the shadow pass's cutout the clear half casts too (all
 // 490 pixels under it fail); with every texel cut out, as the rule before cast nothing from a
@@ -491,6 +492,7 @@ TEST_F(GlTest, TransmissionTextureDecidesWhereASurfaceCasts)
     scene::Material glass;
     glass.baseColorFactor = glm::vec4(kBaseColor, 1.0f);
     glass.roughnessFactor = 0.2f;
+    glass.metallicFactor = 0.0f;
     glass.transmissionFactor = 1.0f;
     glass.transmissionTexture.image = int(s.images.size() - 1);
     glass.transmissionTexture.sampler = int(s.samplers.size() - 1);
@@ -542,7 +544,9 @@ TEST_F(GlTest, TransmissionTextureDecidesWhereASurfaceCasts)
             const double got = shadowed.pixels[at], lit = unshadowed.pixels[at];
             ASSERT_GT(lit, 1e-3) << "the floor faces the sun";
             ++counts[c];
-            const bool ok = c == 0 ? got <= 0.02 * lit : std::abs(got - lit) <= 0.015 * lit + 2e-3;
+            // Under the clear half: the light the glass lets through, tinted by its base colour.
+            const double expected = c == 1 ? lit * kBaseColor.r : lit;
+            const bool ok = c == 0 ? got <= 0.02 * lit : std::abs(got - expected) <= 0.015 * expected + 2e-3;
             if (!ok && wrong[c]++ < 3)
                 ADD_FAILURE() << (c == 0 ? "umbra" : c == 1 ? "under the clear half" : "lit") << " pixel (" << x << ", " << y
                               << "): " << got << ", unshadowed " << lit;
@@ -553,4 +557,173 @@ TEST_F(GlTest, TransmissionTextureDecidesWhereASurfaceCasts)
     EXPECT_GT(counts[1], 100);
     EXPECT_GT(counts[2], 100);
     EXPECT_EQ(wrong[0] + wrong[1] + wrong[2], 0);
+}
+
+// Surfaces that let light through cast coloured and partial shadows (the tint map,
+// render::tintsShadow). Over a floor, under a sun 60° up, three 2.4 m squares around 2 m up:
+// clear coloured glass (a plane, transmission 1, base colour (0.9, 0.45, 0.15)): the light
+// through it is that colour; a blended sheet of alpha 0.4: 0.6 of the light; a glass slab (a
+// closed box 0.5 m thick, KHR_materials_volume thickness 1 at its scale, attenuation colour
+// (0.5, 0.8, 1) at 1 m, base colour (0.64, 1, 0.81)): each of its two faces on the way lets
+// through √base × the attenuation over half the thickness, so the floor receives base ×
+// attenuation^(thickness / distance) — tinted once, as the forward pass tints the view through
+// it. By an exact ray test, each floor pixel whose ray to the sun crosses a square is compared,
+// per channel, with the frame with shadows off times what that square lets through, and every
+// other floor pixel with it unchanged, within 2 % (pixels within 3 of a change, and those whose
+// ray crosses a slab's edge, are not compared). With `--shadows-tint off` every floor pixel is
+// the unshadowed one.
+TEST_F(GlTest, SurfacesThatLetLightThroughTintTheirShadows)
+{
+    test::ShadowPrimitives primitives;
+    primitives.light.type = scene::Light::Type::Directional;
+    primitives.light.intensity = 3.0f;
+    const double elevation = glm::radians(60.0);
+    const dvec3 toSun(0.0, std::sin(elevation), -std::cos(elevation));
+    primitives.lightDirection = -glm::vec3(toSun);
+    scene::Scene s = test::buildShadowScene(primitives);
+    constexpr double kHeight = 2.0, kHalf = 1.2, kSlab = 0.25; // the slab's half thickness
+    struct Pane {
+        double x;
+        scene::Material material;
+        dvec3 through;
+    };
+    std::vector<Pane> panes(3);
+    panes[0].x = -3.0;
+    panes[0].material.baseColorFactor = glm::vec4(0.9f, 0.45f, 0.15f, 1.0f);
+    panes[0].material.transmissionFactor = 1.0f;
+    panes[0].through = dvec3(0.9, 0.45, 0.15);
+    panes[1].x = 0.0;
+    panes[1].material.baseColorFactor = glm::vec4(0.3f, 0.6f, 0.9f, 0.4f);
+    panes[1].material.alphaMode = scene::AlphaMode::Blend;
+    panes[1].through = dvec3(0.6);
+    panes[2].x = 3.0;
+    panes[2].material.baseColorFactor = glm::vec4(0.64f, 1.0f, 0.81f, 1.0f);
+    panes[2].material.transmissionFactor = 1.0f;
+    panes[2].material.attenuationColor = glm::vec3(0.5f, 0.8f, 1.0f);
+    panes[2].material.attenuationDistance = 1.0f;
+    // The slab: makeCube(1) (2 m a side) scaled to 2.4 × 0.5 × 2.4; the shader scales the
+    // thickness by the mean of the model's axes' lengths, so this factor means 0.5 m.
+    const glm::vec3 slabScale{float(kHalf), float(kSlab), float(kHalf)};
+    const double meanScale = (double(slabScale.x) + slabScale.y + slabScale.z) / 3.0;
+    panes[2].material.thickness = float(2.0 * kSlab / meanScale);
+    panes[2].through = dvec3(0.64 * std::pow(0.5, 2.0 * kSlab), 1.0 * std::pow(0.8, 2.0 * kSlab), 0.81);
+    for (size_t k = 0; k < panes.size(); ++k) {
+        Pane& pane = panes[k];
+        pane.material.roughnessFactor = 0.3f;
+        pane.material.metallicFactor = 0.0f; // a metal lets no light through
+        const glm::mat4 at = glm::translate(glm::mat4(1.0f), glm::vec3(float(pane.x), float(kHeight), 0.0f));
+        if (k == 2) {
+            scene::addShape(s, scene::makeCube(1.0f), pane.material, glm::scale(at, slabScale), "slab");
+        } else {
+            pane.material.doubleSided = true;
+            scene::addShape(s, scene::makePlane(float(2.0 * kHalf)), pane.material, at, "pane");
+        }
+    }
+
+    // An opaque block standing on the blended sheet: nearer the sun than the sheet, so the sheet
+    // under it tints nothing of it (the tint map's depth).
+    const dvec3 kBlockMin(-0.6, kHeight, -0.6), kBlockMax(0.6, kHeight + 0.4, 0.6);
+    {
+        scene::Material block;
+        block.baseColorFactor = glm::vec4(kBaseColor, 1.0f);
+        block.metallicFactor = 0.0f;
+        block.roughnessFactor = test::kShadowRoughness;
+        const glm::vec3 centre(0.5 * (kBlockMin + kBlockMax)), half(0.5 * (kBlockMax - kBlockMin));
+        scene::addShape(s, scene::makeCube(1.0f), block, glm::scale(glm::translate(glm::mat4(1.0f), centre), half), "block");
+    }
+
+    constexpr int kImageWidth = 480, kImageHeight = 270, kBand = 3;
+    render::FrameSettings settings;
+    settings.width = kImageWidth;
+    settings.height = kImageHeight;
+    settings.msaa = 1;
+    settings.tonemap = render::Tonemap::None;
+    settings.energyCompensation = false;
+    settings.shadows.filter = ShadowFilter::Hard;
+    const render::View view = render::lookAtView({0.0f, 9.0f, 9.0f}, glm::vec3(0.0f, 0.0f, 1.0f), {0, 1, 0}, glm::radians(55.0f),
+                                                 float(kImageWidth) / float(kImageHeight), 0.1f, 100.0f);
+    render::Renderer renderer;
+    renderer.setScene(s);
+    renderer.render(view, settings);
+    const ImageFloat shadowed = renderer.readRadiance();
+    writePng(std::filesystem::path(SPECULA_TEST_OUTPUT_DIR) / "shadows" / "tinted-gpu.png", renderer.readImage());
+    settings.shadows.tint = false; // --shadows-tint off: they cast nothing
+    renderer.render(view, settings);
+    const ImageFloat untinted = renderer.readRadiance();
+    settings.shadows.enabled = false;
+    renderer.render(view, settings);
+    const ImageFloat unshadowed = renderer.readRadiance();
+
+    // Per pixel: -1 not the floor (a pane, the sky) or not compared; 0 the floor past the
+    // panes; 1 + k the floor whose ray to the sun crosses pane k. A ray meets the panes'
+    // footprints at the slab's top and bottom; crossing one and not the other, it is an edge.
+    const glm::dmat4 inverse = test::inverseViewProjection(view);
+    const auto paneAt = [&](const dvec3& origin, const dvec3& direction, double height) {
+        const dvec3 at = origin + direction * ((height - origin.y) / direction.y);
+        for (size_t k = 0; k < panes.size(); ++k)
+            if (std::abs(at.x - panes[k].x) <= kHalf && std::abs(at.z) <= kHalf) return int(k);
+        return -1;
+    };
+    const auto hitsBlock = [&](const dvec3& origin, const dvec3& direction) { // slab method
+        double near = 0.0, far = 1e30;
+        for (int a = 0; a < 3; ++a) {
+            const double t0 = (kBlockMin[a] - origin[a]) / direction[a], t1 = (kBlockMax[a] - origin[a]) / direction[a];
+            near = std::max(near, std::min(t0, t1));
+            far = std::min(far, std::max(t0, t1));
+        }
+        return near <= far;
+    };
+    const int kBlockTop = int(panes.size()) + 1;
+    std::vector<int> category(size_t(kImageWidth * kImageHeight), -1);
+    for (int y = 0; y < kImageHeight; ++y)
+        for (int x = 0; x < kImageWidth; ++x) {
+            const test::Ray ray = test::pixelRay(inverse, x, y, kImageWidth, kImageHeight);
+            if (ray.direction.y >= 0.0) continue;
+            int& c = category[size_t(y * kImageWidth + x)];
+            if (hitsBlock(ray.origin, ray.direction)) {
+                const dvec3 top = ray.origin + ray.direction * ((kBlockMax.y - ray.origin.y) / ray.direction.y);
+                if (std::abs(top.x - 0.5 * (kBlockMin.x + kBlockMax.x)) < 0.5 * (kBlockMax.x - kBlockMin.x) &&
+                    std::abs(top.z - 0.5 * (kBlockMin.z + kBlockMax.z)) < 0.5 * (kBlockMax.z - kBlockMin.z))
+                    c = kBlockTop;
+                continue;
+            }
+            if (paneAt(ray.origin, ray.direction, kHeight + kSlab) >= 0 || paneAt(ray.origin, ray.direction, kHeight - kSlab) >= 0)
+                continue; // a pane, seen first
+            const dvec3 p = ray.origin + ray.direction * (-ray.origin.y / ray.direction.y);
+            if (std::abs(p.x) > 0.5 * primitives.floorSize || std::abs(p.z) > 0.5 * primitives.floorSize) continue;
+            if (hitsBlock(p, toSun)) continue; // the block's own shadow
+            const int top = paneAt(p, toSun, kHeight + kSlab), bottom = paneAt(p, toSun, kHeight - kSlab);
+            if (top == bottom) c = 1 + top;
+        }
+    std::vector<int> counts(panes.size() + 2, 0), wrong(panes.size() + 2, 0);
+    for (int y = kBand; y < kImageHeight - kBand; ++y)
+        for (int x = kBand; x < kImageWidth - kBand; ++x) {
+            const int c = category[size_t(y * kImageWidth + x)];
+            if (c < 0 || !interior(category, kImageWidth, x, y, kBand)) continue;
+            ++counts[size_t(c)];
+            const dvec3 through = c == 0 || c == kBlockTop ? dvec3(1.0) : panes[size_t(c - 1)].through;
+            bool ok = true;
+            std::string detail;
+            for (int channel = 0; channel < 3; ++channel) {
+                const size_t at = (size_t(y) * kImageWidth + size_t(x)) * 4 + size_t(channel);
+                const double got = shadowed.pixels[at], lit = unshadowed.pixels[at];
+                ASSERT_GT(lit, 1e-3) << "the floor faces the sun";
+                const double expected = lit * through[channel];
+                if (std::abs(got - expected) > 0.02 * expected + 2e-3) ok = false;
+                if (c != kBlockTop && std::abs(untinted.pixels[at] - lit) > 0.02 * lit + 2e-3) ok = false;
+                detail += " " + std::to_string(got) + " (" + std::to_string(expected) + ")";
+            }
+            if (!ok && wrong[size_t(c)]++ < 3)
+                ADD_FAILURE() << (c == 0           ? std::string("past the panes")
+                                  : c == kBlockTop ? std::string("the block's top")
+                                                   : "under pane " + std::to_string(c - 1))
+                              << ", pixel (" << x
+                              << ", " << y << "): rgb" << detail;
+        }
+    std::printf("tinted shadows: %d pixels past the panes, %d, %d, %d under them, %d on the block; %d, %d, %d, %d, %d wrong\n",
+                counts[0], counts[1], counts[2], counts[3], counts[4], wrong[0], wrong[1], wrong[2], wrong[3], wrong[4]);
+    for (size_t c = 0; c < counts.size(); ++c) {
+        EXPECT_GT(counts[c], 100) << "category " << c;
+        EXPECT_EQ(wrong[c], 0) << "category " << c;
+    }
 }

@@ -814,6 +814,9 @@ TEST_F(GlTest, TransparencyDoubleSidedBlendDrawsBackFacesFirst)
 // The shadow rule (render/GpuScene.h): opaque surfaces and those that let less than half the
 // light through cast; blended ones and those of transmission 0.5 and above do not. A blended
 // material of alpha 1 everywhere is drawn opaque, and casts none still (ShadowsSpot's lamp).
+// Those that let light through — blended, or of transmission 0.5 and above — tint the shadows
+// (render::tintsShadow: the tint map), except a blended one of alpha 1 everywhere, drawn opaque:
+// it casts nothing still.
 TEST_F(GlTest, TransparencyShadowCastersFollowTheRule)
 {
     scene::Scene s;
@@ -823,14 +826,15 @@ TEST_F(GlTest, TransparencyShadowCastersFollowTheRule)
         float transmission;
         bool casts;
         float alpha;
-    } kinds[] = {{"opaque", scene::AlphaMode::Opaque, 0.0f, true, 1.0f},
-                 {"blended", scene::AlphaMode::Blend, 0.0f, false, 0.5f},
-                 {"blended of alpha 1 (drawn opaque, casts none)", scene::AlphaMode::Blend, 0.0f, false, 1.0f},
-                 {"tinted glass", scene::AlphaMode::Opaque, 0.3f, true, 1.0f},
-                 {"clear glass", scene::AlphaMode::Opaque, 0.5f, false, 1.0f},
-                 {"blended glass", scene::AlphaMode::Blend, 0.2f, false, 0.5f},
-                 {"clear glass with a transmission texture (cut out per texel)", scene::AlphaMode::Opaque, 1.0f, true, 1.0f},
-                 {"blended glass with a transmission texture", scene::AlphaMode::Blend, 1.0f, false, 0.5f}};
+        bool tints;
+    } kinds[] = {{"opaque", scene::AlphaMode::Opaque, 0.0f, true, 1.0f, false},
+                 {"blended", scene::AlphaMode::Blend, 0.0f, false, 0.5f, true},
+                 {"blended of alpha 1 (drawn opaque, casts none)", scene::AlphaMode::Blend, 0.0f, false, 1.0f, false},
+                 {"tinted glass", scene::AlphaMode::Opaque, 0.3f, true, 1.0f, false},
+                 {"clear glass", scene::AlphaMode::Opaque, 0.5f, false, 1.0f, true},
+                 {"blended glass", scene::AlphaMode::Blend, 0.2f, false, 0.5f, true},
+                 {"clear glass with a transmission texture (cut out per texel)", scene::AlphaMode::Opaque, 1.0f, true, 1.0f, true},
+                 {"blended glass with a transmission texture", scene::AlphaMode::Blend, 1.0f, false, 0.5f, true}};
     s.images.push_back({"transmission", 1, 1, 4, {255, 255, 255, 255}});
     for (const Kind& k : kinds) {
         scene::Material m;
@@ -853,6 +857,13 @@ TEST_F(GlTest, TransparencyShadowCastersFollowTheRule)
     for (size_t i = 0; i < std::size(kinds); ++i)
         if (kinds[i].casts) expected.push_back(int(i));
     EXPECT_EQ(casting, expected);
+    const render::DrawList tinters = render::DrawList::build(gpu, view, viewProjection, render::DrawFilter::ShadowTinters, programs);
+    std::vector<int> tinting, expectedTinting;
+    for (const render::DrawCommand& c : tinters.commands()) tinting.push_back(c.material);
+    std::sort(tinting.begin(), tinting.end());
+    for (size_t i = 0; i < std::size(kinds); ++i)
+        if (kinds[i].tints) expectedTinting.push_back(int(i));
+    EXPECT_EQ(tinting, expectedTinting);
     // Transmissive draws have their own list (drawn after the opaque frame is copied), blended or not.
     const render::DrawList transmissive = render::DrawList::build(gpu, view, viewProjection, render::DrawFilter::Transmissive, programs);
     EXPECT_EQ(transmissive.commands().size(), 5u);

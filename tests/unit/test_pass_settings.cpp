@@ -140,7 +140,7 @@ TEST(PassSettings, FlagsAreTodays)
     const std::vector<std::string> expected = {"shadows", "shadows-cascades", "shadows-cascade-split", "shadows-distance",
                                                "shadows-cascade-blend", "shadows-normal-bias", "shadows-slope-bias",
                                                "shadows-constant-bias", "shadows-max-lights", "shadows-max-directional",
-                                               "shadows-light-size", "shadows-cache", "bloom", "bloom-intensity", "bloom-levels", "bloom-radius", "bloom-threshold",
+                                               "shadows-light-size", "shadows-cache", "shadows-tint", "bloom", "bloom-intensity", "bloom-levels", "bloom-radius", "bloom-threshold",
                                                "bloom-knee", "bloom-firefly-filter", "ssao", "ssao-radius", "ssao-bias",
                                                "ssao-power", "ssao-samples", "fxaa", "auto-exposure"};
     EXPECT_EQ(flags, expected);

@@ -105,6 +105,13 @@ void appendBytes(std::string& bytes, const T& value)
     bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
 }
 
+// The tint map's size: the atlas's up to 4096² (128 MiB of RGBA16F), half of it above (the
+// high quality's 8192² atlas).
+int tintSize(int atlasSize)
+{
+    return atlasSize > 4096 ? atlasSize / 2 : atlasSize;
+}
+
 bool overlaps(const AtlasTile& a, const AtlasTile& b)
 {
     return a.x < b.x + b.size && b.x < a.x + a.size && a.y < b.y + b.size && b.y < a.y + a.size;
@@ -129,6 +136,14 @@ struct ShadowPass::Impl {
     std::vector<DrawProgram> drawPrograms; ///< by material
     std::map<TileKey, uint64_t> tileContents; ///< what each tile of the atlas holds now
     std::vector<PlannedLight> planned;
+    /// The tint map (lights/shadow.glsl), at the atlas's resolution up to 4096² (tintSize), its
+    /// tiles where the atlas's are: rgb what the surfaces over a texel let through, alpha the nearest one's
+    /// depth. Made when a scene first has such a surface (render::tintsShadow).
+    gl::Texture tint;
+    gl::Framebuffer tintFramebuffer;
+    std::map<uint64_t, CasterProgram> tintPrograms;
+    std::vector<DrawProgram> tintDrawPrograms; ///< by material
+    bool tinted = false;                       ///< this frame draws the tint map
     ShadowVariant variant; // of the last addTo: no kind when no light has a map
 
     CasterProgram& casterProgram(const MaterialBinding& m)
@@ -155,6 +170,44 @@ struct ShadowPass::Impl {
             p.viewProjection = p.program.uniformLocation("uShadowViewProjection");
         }
         return p;
+    }
+
+    CasterProgram& tintProgram(const MaterialBinding& m)
+    {
+        const uint64_t features = m.features;
+        const bool blended = m.declaredAlphaMode == scene::AlphaMode::Blend;
+        const uint64_t key = (features & (SPECULA_MATERIAL_ALPHA_MASK | SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE | SPECULA_MATERIAL_USE_VERTEX_COLOR |
+                                          SPECULA_MATERIAL_TRANSMISSION | SPECULA_MATERIAL_TRANSMISSION_TEXTURES)) |
+                             (blended ? uint64_t(1) << 63 : 0u);
+        CasterProgram& p = tintPrograms[key];
+        if (!p.program) {
+            std::vector<std::string> defines{"SHADOW_PASS", "SHADOW_TINT"};
+            if (features & SPECULA_MATERIAL_ALPHA_MASK) defines.push_back("ALPHA_MASK");
+            if (blended) defines.push_back("ALPHA_BLEND");
+            if (features & SPECULA_MATERIAL_HAS_BASE_COLOR_TEXTURE) defines.push_back("HAS_BASE_COLOR_TEXTURE");
+            if (features & SPECULA_MATERIAL_USE_VERTEX_COLOR) defines.push_back("VERTEX_COLOR");
+            if (features & SPECULA_MATERIAL_TRANSMISSION) defines.push_back("TRANSMISSION");
+            if (features & SPECULA_MATERIAL_TRANSMISSION_TEXTURES) defines.push_back("TRANSMISSION_TEXTURES");
+            p.program = gl::Program({.vertex = "forward/pbr.vert", .fragment = "shadow/shadow_depth.frag", .defines = defines,
+                                     .label = "shadow tint"});
+            p.model = p.program.uniformLocation("uModel");
+            p.normalMatrix = p.program.uniformLocation("uNormalMatrix");
+            p.viewProjection = p.program.uniformLocation("uShadowViewProjection");
+        }
+        return p;
+    }
+
+    void ensureTint(gl::State& state, int atlasSize)
+    {
+        const int size = tintSize(atlasSize);
+        if (tint && tint.width() == size) return;
+        tint = gl::Texture({.format = gl::Format::RGBA16F, .width = size, .height = size, .label = "shadow tint"});
+        tintFramebuffer = gl::Framebuffer("shadow tint");
+        tintFramebuffer.attachColor(0, tint);
+        tintFramebuffer.check();
+        state.noScissor();
+        state.apply({});
+        tintFramebuffer.clearColor(0, 1.0f, 1.0f, 1.0f, 1.0f); // nothing over any texel
     }
 
     void ensureAtlas(gl::State& state, int size)
@@ -208,6 +261,23 @@ struct ShadowPass::Impl {
                                                  .shadowCasters = true,
                                                  .depthBiasSlope = s.slopeBias,
                                                  .depthBiasConstant = s.constantBias});
+        if (tinted) {
+            // The tint map's tile: cleared to "nothing over it", then every surface that lets
+            // light through, blended (rgb multiplied, alpha the nearest depth), none hidden.
+            state.bindFramebuffer(&tintFramebuffer);
+            const int shift = tint.width() < atlas.width() ? 1 : 0; // the tint map's texels to the atlas's
+            state.viewport(t.x >> shift, t.y >> shift, t.size >> shift, t.size >> shift);
+            state.scissor(t.x >> shift, t.y >> shift, t.size >> shift, t.size >> shift);
+            tintFramebuffer.clearColor(0, 1.0f, 1.0f, 1.0f, 1.0f);
+            for (auto& [key, p] : tintPrograms) p.program.set(p.viewProjection, v.view.viewProjection);
+            const DrawList tinters = DrawList::build(scene, v.view.viewProjection, v.view.viewProjection, DrawFilter::ShadowTinters,
+                                                     tintDrawPrograms);
+            frame.stats.triangles += tinters.submit(state, scene, tintDrawPrograms,
+                                                    {.white = &frame.stores.white,
+                                                     .flatNormal = &frame.stores.flatNormal,
+                                                     .shadowCasters = true,
+                                                     .shadowTint = true});
+        }
         state.noScissor();
     }
 
@@ -252,6 +322,10 @@ void ShadowPass::bind(gl::State& state) const
     state.bindSampler(SPECULA_UNIT_SHADOW_DEPTH, &r.raw);
     state.bindTexture(SPECULA_UNIT_SHADOW_RECORDS, r.recordTexels);
     state.bindSampler(SPECULA_UNIT_SHADOW_RECORDS, nullptr);
+    if (r.variant.tint) {
+        state.bindTexture(SPECULA_UNIT_SHADOW_TINT, r.tint);
+        state.bindSampler(SPECULA_UNIT_SHADOW_TINT, nullptr); // read by texelFetch
+    }
 }
 
 GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
@@ -295,6 +369,14 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
     // Tiles: cascades first (they cover the whole view), then by importance, halving a
     // light's tiles until they fit.
     r.ensureAtlas(frame.state(), q.atlas);
+    // Whether any surface that may cast lets light through.
+    r.tinted = false;
+    for (size_t i = 0; s.tint && !r.tinted && i < scene->draws().size(); ++i) {
+        const DrawItem& item = scene->draws()[i];
+        const GpuPrimitive& p = scene->primitives()[size_t(item.primitive)];
+        r.tinted = item.castShadows && p.topology == scene::Topology::Triangles && tintsShadow(scene->materials()[size_t(p.material)]);
+    }
+    if (r.tinted) r.ensureTint(frame.state(), q.atlas);
     ShadowAtlas atlas(q.atlas, q.minTile);
     // The camera's near and far planes (an infinite far plane: 1e30).
     const glm::mat4& P = frame.view.projection;
@@ -379,6 +461,7 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
             appendBytes(bytes, frame.stores.casterVersion);
             appendBytes(bytes, s.slopeBias);
             appendBytes(bytes, s.constantBias);
+            appendBytes(bytes, r.tinted);
             const uint64_t key = fnv1a64(bytes);
             pv.key = key;
             light.views.push_back(pv);
@@ -432,7 +515,7 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
     stats.cached = views - rendered;
     stats.atlasSize = q.atlas;
     if (r.planned.empty()) return {};
-    r.variant = {.filter = filterId(s.filter), .taps = q.taps, .tent = q.tent};
+    r.variant = {.filter = filterId(s.filter), .taps = q.taps, .tent = q.tent, .tint = r.tinted};
     for (const PlannedLight& light : r.planned) {
         r.variant.directional |= light.kind == SPECULA_SHADOW_DIRECTIONAL;
         r.variant.spot |= light.kind == SPECULA_SHADOW_SPOT;
@@ -448,6 +531,15 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
         }
         CasterProgram& p = r.casterProgram(m);
         r.drawPrograms.push_back({&p.program, p.model, p.normalMatrix, nullptr});
+    }
+    r.tintDrawPrograms.clear();
+    for (const MaterialBinding& m : scene->materials()) {
+        if (!r.tinted || !tintsShadow(m)) {
+            r.tintDrawPrograms.push_back({});
+            continue;
+        }
+        CasterProgram& p = r.tintProgram(m);
+        r.tintDrawPrograms.push_back({&p.program, p.model, p.normalMatrix, nullptr});
     }
 
     GraphTextureDesc desc;

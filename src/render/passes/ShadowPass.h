@@ -16,8 +16,11 @@
 //
 // Casters: opaque and alpha-masked surfaces (masked ones cut out with their cutoff and base
 // colour texture), every face of them (double-sided and open meshes cast from either side),
-// except models and shapes with castShadows off. Blended surfaces cast no shadow. Billboards
-// cast none. The Doom frame has no shadows.
+// except models and shapes with castShadows off. Blended surfaces and those that let half the
+// light or more through cast none into the atlas; what they let through goes into the tint map
+// (the atlas's resolution up to 4096², made when a scene has such a surface: render::tintsShadow),
+// which colours or dims the light beyond them. Billboards cast none. The Doom frame has no
+// shadows.
 #include <memory>
 
 #include "render/graph/FrameGraph.h"
