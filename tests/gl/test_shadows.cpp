@@ -113,6 +113,20 @@ Hit intersect(const ShadowScene& sc, const dvec3& o, const dvec3& d)
 
 scene::Scene buildScene(const ShadowScene& sc) { return specula::test::buildShadowScene(sc); }
 
+// A frame whose pixels are radiance, one sample at each pixel's centre (the exact ray test's),
+// with hard shadows: no tone map, no energy compensation.
+render::FrameSettings radianceSettings(int width, int height)
+{
+    render::FrameSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.msaa = 1;
+    settings.tonemap = render::Tonemap::None;
+    settings.energyCompensation = false;
+    settings.shadows.filter = ShadowFilter::Hard;
+    return settings;
+}
+
 // Whether every pixel within `band` of (x, y) is in the same category as it: not near a change of
 // what the exact test sees (callers keep `band` pixels from the image's edges).
 bool interior(const std::vector<int>& category, int width, int x, int y, int band)
@@ -501,13 +515,7 @@ TEST_F(GlTest, TransmissionTextureDecidesWhereASurfaceCasts)
                     "half-clear square");
 
     constexpr int kImageWidth = 240, kImageHeight = 180, kBand = 3;
-    render::FrameSettings settings;
-    settings.width = kImageWidth;
-    settings.height = kImageHeight;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
-    settings.energyCompensation = false;
-    settings.shadows.filter = ShadowFilter::Hard;
+    render::FrameSettings settings = radianceSettings(kImageWidth, kImageHeight);
     const render::View view = render::lookAtView({0.0f, 8.0f, 10.0f}, glm::vec3(0.0f), {0, 1, 0}, glm::radians(50.0f),
                                                  float(kImageWidth) / float(kImageHeight), 0.1f, 100.0f);
     render::Renderer renderer;
@@ -633,13 +641,7 @@ TEST_F(GlTest, SurfacesThatLetLightThroughTintTheirShadows)
     }
 
     constexpr int kImageWidth = 480, kImageHeight = 270, kBand = 3;
-    render::FrameSettings settings;
-    settings.width = kImageWidth;
-    settings.height = kImageHeight;
-    settings.msaa = 1;
-    settings.tonemap = render::Tonemap::None;
-    settings.energyCompensation = false;
-    settings.shadows.filter = ShadowFilter::Hard;
+    render::FrameSettings settings = radianceSettings(kImageWidth, kImageHeight);
     const render::View view = render::lookAtView({0.0f, 9.0f, 9.0f}, glm::vec3(0.0f, 0.0f, 1.0f), {0, 1, 0}, glm::radians(55.0f),
                                                  float(kImageWidth) / float(kImageHeight), 0.1f, 100.0f);
     render::Renderer renderer;

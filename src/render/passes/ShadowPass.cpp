@@ -112,6 +112,18 @@ int tintSize(int atlasSize)
     return atlasSize > 4096 ? atlasSize / 2 : atlasSize;
 }
 
+// A program of the shadow pass (shadow/shadow_depth.frag with `defines`): the forward vertex
+// shader, projecting into the light's view.
+CasterProgram makeCasterProgram(const std::vector<std::string>& defines, const char* label)
+{
+    CasterProgram p;
+    p.program = gl::Program({.vertex = "forward/pbr.vert", .fragment = "shadow/shadow_depth.frag", .defines = defines, .label = label});
+    p.model = p.program.uniformLocation("uModel");
+    p.normalMatrix = p.program.uniformLocation("uNormalMatrix");
+    p.viewProjection = p.program.uniformLocation("uShadowViewProjection");
+    return p;
+}
+
 bool overlaps(const AtlasTile& a, const AtlasTile& b)
 {
     return a.x < b.x + b.size && b.x < a.x + a.size && a.y < b.y + b.size && b.y < a.y + a.size;
@@ -162,13 +174,7 @@ struct ShadowPass::Impl {
             defines.push_back("TRANSMISSION_CUTOUT");
         }
         CasterProgram& p = programs[key];
-        if (!p.program) {
-            p.program = gl::Program({.vertex = "forward/pbr.vert", .fragment = "shadow/shadow_depth.frag", .defines = defines,
-                                     .label = "shadow caster"});
-            p.model = p.program.uniformLocation("uModel");
-            p.normalMatrix = p.program.uniformLocation("uNormalMatrix");
-            p.viewProjection = p.program.uniformLocation("uShadowViewProjection");
-        }
+        if (!p.program) p = makeCasterProgram(defines, "shadow caster");
         return p;
     }
 
@@ -188,11 +194,7 @@ struct ShadowPass::Impl {
             if (features & SPECULA_MATERIAL_USE_VERTEX_COLOR) defines.push_back("VERTEX_COLOR");
             if (features & SPECULA_MATERIAL_TRANSMISSION) defines.push_back("TRANSMISSION");
             if (features & SPECULA_MATERIAL_TRANSMISSION_TEXTURES) defines.push_back("TRANSMISSION_TEXTURES");
-            p.program = gl::Program({.vertex = "forward/pbr.vert", .fragment = "shadow/shadow_depth.frag", .defines = defines,
-                                     .label = "shadow tint"});
-            p.model = p.program.uniformLocation("uModel");
-            p.normalMatrix = p.program.uniformLocation("uNormalMatrix");
-            p.viewProjection = p.program.uniformLocation("uShadowViewProjection");
+            p = makeCasterProgram(defines, "shadow tint");
         }
         return p;
     }
