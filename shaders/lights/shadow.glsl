@@ -1,7 +1,7 @@
 // How much of a light reaches a shading point, per channel in [0, 1]: 0 in its shadow, 1 in full
 // light, a colour behind glass. Every reflection model multiplies each light's contribution by
-// it, so shadows come in here and nowhere else. The includer declares the frame block (frame: the camera's view for the
-// cascades) before including this file.
+// it, so shadows come in here and nowhere else. The includer declares the frame block (frame:
+// the camera's view for the cascades) before including this file.
 //
 // Without SHADOWS (no light of the frame has a map) it is exactly 1.0 and costs nothing.
 // With it, a light whose GpuLight.spot.z is its slot + 1 is looked up in the shadow atlas
