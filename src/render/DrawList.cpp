@@ -47,6 +47,25 @@ uint32_t DrawList::orderedBits(float value)
     return (bits & 0x80000000u) ? ~bits : bits | 0x80000000u;
 }
 
+bool DrawList::passes(const GpuScene& scene, const DrawItem& item, DrawFilter filter)
+{
+    if (!item.visible) return false;
+    const GpuPrimitive& p = scene.primitives()[size_t(item.primitive)];
+    const MaterialBinding& material = scene.materials()[size_t(p.material)];
+    const bool blended = material.alphaMode == scene::AlphaMode::Blend;
+    const bool transmissive = (material.features & SPECULA_MATERIAL_TRANSMISSION) != 0;
+    // A line or a point stops no light (it has no area).
+    const bool surface = item.castShadows && p.topology == scene::Topology::Triangles;
+    switch (filter) {
+    case DrawFilter::Opaque: return !blended && !transmissive;
+    case DrawFilter::Blended: return blended && !transmissive;
+    case DrawFilter::Transmissive: return transmissive;
+    case DrawFilter::ShadowCasters: return surface && castsShadow(material);
+    case DrawFilter::ShadowTinters: return surface && tintsShadow(material);
+    }
+    return false;
+}
+
 DrawList DrawList::build(const GpuScene& scene, const glm::mat4& view, const glm::mat4& viewProjection, DrawFilter filter,
                          const std::vector<DrawProgram>& programs, const scene::LodView& lod)
 {
@@ -54,23 +73,8 @@ DrawList DrawList::build(const GpuScene& scene, const glm::mat4& view, const glm
     list.mFilter = filter;
     const Frustum frustum(viewProjection);
     for (const DrawItem& item : scene.draws()) {
-        if (!item.visible) continue;
+        if (!passes(scene, item, filter)) continue;
         const GpuPrimitive& p = scene.primitives()[size_t(item.primitive)];
-        const MaterialBinding& material = scene.materials()[size_t(p.material)];
-        const bool blended = material.alphaMode == scene::AlphaMode::Blend;
-        const bool transmissive = (material.features & SPECULA_MATERIAL_TRANSMISSION) != 0;
-        switch (filter) {
-        case DrawFilter::Opaque: if (blended || transmissive) continue; break;
-        case DrawFilter::Blended: if (!blended || transmissive) continue; break;
-        case DrawFilter::Transmissive: if (!transmissive) continue; break;
-        case DrawFilter::ShadowCasters:
-            // A line or a point stops no light (it has no area).
-            if (!castsShadow(material) || !item.castShadows || p.topology != scene::Topology::Triangles) continue;
-            break;
-        case DrawFilter::ShadowTinters:
-            if (!tintsShadow(material) || !item.castShadows || p.topology != scene::Topology::Triangles) continue;
-            break;
-        }
         const scene::Bounds world = p.bounds.transformed(item.world);
         if (!frustum.intersects(world)) continue;
         const glm::vec3 center = glm::vec3(item.world * glm::vec4(p.bounds.center(), 1.0f));

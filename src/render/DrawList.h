@@ -86,6 +86,8 @@ struct SubmitOptions {
 
 class DrawList {
 public:
+    /// Whether a draw of the scene belongs to `filter`'s lists (shown, and of its kind).
+    static bool passes(const GpuScene& scene, const DrawItem& item, DrawFilter filter);
     /// The scene's draws visible in `viewProjection` that pass `filter`, sorted.
     /// `programs[material]` orders opaque draws by program. Each draw takes the level of
     /// detail `lod` chooses for it (scene::selectLod); the default LodView: full detail.

@@ -263,23 +263,31 @@ struct ShadowPass::Impl {
                                                  .shadowCasters = true,
                                                  .depthBiasSlope = s.slopeBias,
                                                  .depthBiasConstant = s.constantBias});
-        if (tinted) {
-            // The tint map's tile: cleared to "nothing over it", then every surface that lets
-            // light through, blended (rgb multiplied, alpha the nearest depth), none hidden.
-            state.bindFramebuffer(&tintFramebuffer);
-            const int shift = tint.width() < atlas.width() ? 1 : 0; // the tint map's texels to the atlas's
-            state.viewport(t.x >> shift, t.y >> shift, t.size >> shift, t.size >> shift);
-            state.scissor(t.x >> shift, t.y >> shift, t.size >> shift, t.size >> shift);
-            tintFramebuffer.clearColor(0, 1.0f, 1.0f, 1.0f, 1.0f);
-            for (auto& [key, p] : tintPrograms) p.program.set(p.viewProjection, v.view.viewProjection);
-            const DrawList tinters = DrawList::build(scene, v.view.viewProjection, v.view.viewProjection, DrawFilter::ShadowTinters,
-                                                     tintDrawPrograms);
-            frame.stats.triangles += tinters.submit(state, scene, tintDrawPrograms,
-                                                    {.white = &frame.stores.white,
-                                                     .flatNormal = &frame.stores.flatNormal,
-                                                     .shadowCasters = true,
-                                                     .shadowTint = true});
-        }
+        state.noScissor();
+    }
+
+    /// The tint map's tile of a view: cleared to "nothing over it", then every surface that
+    /// lets light through, blended (rgb multiplied, alpha the nearest depth), none hidden.
+    /// Called for a pass's views after their depth (one change of target each way: on a CPU
+    /// rasteriser each change ends a batch of work, whose memory waits for it).
+    void renderTint(const FrameContext& frame, const PlannedView& v)
+    {
+        gl::State& state = frame.state();
+        const GpuScene& scene = *frame.stores.scene;
+        const AtlasTile& t = v.view.tile;
+        state.bindFramebuffer(&tintFramebuffer);
+        const int shift = tint.width() < atlas.width() ? 1 : 0; // the tint map's texels to the atlas's
+        state.viewport(t.x >> shift, t.y >> shift, t.size >> shift, t.size >> shift);
+        state.scissor(t.x >> shift, t.y >> shift, t.size >> shift, t.size >> shift);
+        tintFramebuffer.clearColor(0, 1.0f, 1.0f, 1.0f, 1.0f);
+        for (auto& [key, p] : tintPrograms) p.program.set(p.viewProjection, v.view.viewProjection);
+        const DrawList tinters = DrawList::build(scene, v.view.viewProjection, v.view.viewProjection, DrawFilter::ShadowTinters,
+                                                 tintDrawPrograms);
+        frame.stats.triangles += tinters.submit(state, scene, tintDrawPrograms,
+                                                {.white = &frame.stores.white,
+                                                 .flatNormal = &frame.stores.flatNormal,
+                                                 .shadowCasters = true,
+                                                 .shadowTint = true});
         state.noScissor();
     }
 
@@ -372,12 +380,9 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
     // light's tiles until they fit.
     r.ensureAtlas(frame.state(), q.atlas);
     // Whether any surface that may cast lets light through.
-    r.tinted = false;
-    for (size_t i = 0; s.tint && !r.tinted && i < scene->draws().size(); ++i) {
-        const DrawItem& item = scene->draws()[i];
-        const GpuPrimitive& p = scene->primitives()[size_t(item.primitive)];
-        r.tinted = item.castShadows && p.topology == scene::Topology::Triangles && tintsShadow(scene->materials()[size_t(p.material)]);
-    }
+    r.tinted = s.tint && std::any_of(scene->draws().begin(), scene->draws().end(), [scene](const DrawItem& item) {
+                   return DrawList::passes(*scene, item, DrawFilter::ShadowTinters);
+               });
     if (r.tinted) r.ensureTint(frame.state(), q.atlas);
     ShadowAtlas atlas(q.atlas, q.minTile);
     // The camera's near and far planes (an infinite far plane: 1e30).
@@ -569,6 +574,11 @@ GraphTexture ShadowPass::addTo(FrameGraph& graph, const FrameContext& frame)
                                 r.renderView(frame, v, s);
                                 r.remember(v.view.tile, v.key);
                             }
+                if (r.tinted)
+                    for (const PlannedLight& light : r.planned)
+                        if (light.kind == kind)
+                            for (const PlannedView& v : light.views)
+                                if (v.render) r.renderTint(frame, v);
             });
     }
     return atlasHandle;
